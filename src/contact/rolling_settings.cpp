@@ -1,0 +1,36 @@
+#include "contact/rolling_settings.hpp"
+
+#include <cmath>
+
+#include "core/config_table.hpp"
+
+namespace rollnoise {
+
+std::size_t RollingSettings::steps() const {
+  return static_cast<std::size_t>(std::llround(duration / time_step));
+}
+
+RollingSettings read_rolling_settings(const ConfigTable& rolling) {
+  RollingSettings s;
+  s.speed = rolling.positive("speed");
+  s.duration = rolling.positive("duration");
+  s.time_step = rolling.positive("time_step");
+  s.static_load = rolling.non_negative("static_load");
+  s.history = parse_history_kind(
+      rolling.choice("history", {"auto", "direct", "modal", "fft"}, "auto"));
+  s.discretisation =
+      parse_discretisation(rolling.choice("discretisation", {"step", "rectangle"}, "step"));
+  rolling.reject_unknown_keys();
+  const double steps = s.duration / s.time_step;
+  if (steps < 1.0) {
+    rolling.fail("time_step", "must be smaller than the duration (" + std::to_string(s.duration) + " s)");
+  }
+  // The direct engine keeps the whole history: past ~2·10⁷ steps it no longer fits in memory.
+  if (steps > 2e7) {
+    rolling.fail("time_step", "gives " + std::to_string(static_cast<long long>(steps)) +
+                                  " steps; at most 2e7 are allowed (raise time_step or shorten duration)");
+  }
+  return s;
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,21 @@
+#pragma once
+// The static contact under a load W (MODEL.md §2, "Preload and start"): the indentation d of
+// the body towards a flat road such that the contact forces, the solution of the LCP
+//   F ≥ 0,  gap = h − d + C·F ≥ 0,  Fᵀ·gap = 0,
+// add up to W. ΣF(d) is piecewise linear and increasing in d, so Newton's method on the
+// active set, kept inside a bisection bracket, ends on the exact d.
+#include <Eigen/Core>
+
+namespace rollnoise {
+
+struct StaticContact {
+  double indentation = 0.0;  // d, m
+  Eigen::VectorXd force;     // N, per point
+};
+
+// `compliance`: the static compliance (SPD), `undeformed_gap`: h per point at d = 0 (m),
+// `load`: W ≥ 0 (N).
+StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
+                                   const Eigen::VectorXd& undeformed_gap, double load);
+
+}  // namespace rollnoise

@@ -1,0 +1,164 @@
+#include "core/case_file.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+
+toml::table parse_toml_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path.string(), "", "file not found");
+  if (fs::is_directory(path, ec)) throw InputError(path.string(), "", "is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot be opened for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  try {
+    return toml::parse(text, path.string());
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(path.string(),
+                     "line " + std::to_string(begin.line) + ", column " +
+                         std::to_string(begin.column),
+                     "malformed TOML: " + std::string(error.description()));
+  }
+}
+
+fs::path resolve_referenced_file(const fs::path& referenced, const fs::path& case_file) {
+  if (referenced.is_absolute()) return referenced;
+  std::error_code ec;
+  const fs::path case_dir = case_file.parent_path();
+  const fs::path beside = case_dir / referenced;
+  if (fs::exists(beside, ec)) return beside;
+  if (fs::exists(referenced, ec)) return referenced;
+  for (fs::path dir = fs::absolute(case_dir, ec); !dir.empty() && dir != dir.root_path();
+       dir = dir.parent_path()) {
+    if (fs::exists(dir / referenced, ec)) return dir / referenced;
+  }
+  return beside;  // does not exist: parse_toml_file reports it
+}
+
+CaseFile::CaseFile(fs::path path, toml::table root)
+    : path_(std::move(path)), root_(std::move(root)), provenance_(std::make_shared<Provenance>()) {}
+
+namespace {
+
+// Reads the value of "key=value" as TOML, or as a plain string when it is not valid TOML
+// (so that --set road.type=sine works without quotes).
+toml::node_type parse_override_value(const std::string& text, toml::table& holder) {
+  try {
+    holder = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{{"v", text}};
+  }
+  return holder["v"].type();
+}
+
+}  // namespace
+
+void CaseFile::apply_overrides(const std::vector<std::string>& overrides,
+                               const std::string& prefix) {
+  for (const auto& item : overrides) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw InputError("--set", item, "expected section.key=value");
+    }
+    const std::string path = item.substr(0, eq);
+    toml::table holder;
+    parse_override_value(item.substr(eq + 1), holder);
+
+    // Walk (and create) the tables along the dotted path.
+    toml::table* table = &root_;
+    std::string full = prefix;
+    std::size_t start = 0;
+    while (true) {
+      const auto dot = path.find('.', start);
+      const std::string part = path.substr(start, dot == std::string::npos ? dot : dot - start);
+      if (part.empty()) throw InputError("--set", item, "empty name in the key path");
+      full += (full.empty() ? "" : ".") + part;
+      if (dot == std::string::npos) {
+        table->insert_or_assign(part, *holder["v"].node());
+        (*provenance_)[full] = "--set " + path;
+        break;
+      }
+      toml::node* next = table->get(part);
+      if (!next) next = &table->insert_or_assign(part, toml::table{}).first->second;
+      if (!next->is_table()) {
+        throw InputError("--set", item, "\"" + full + "\" is a value, not a table");
+      }
+      table = next->as_table();
+      start = dot + 1;
+    }
+  }
+}
+
+CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& overrides) {
+  CaseFile file(path, parse_toml_file(path));
+  // Overrides first, so that --set tyre.file=... picks the model file.
+  file.apply_overrides(overrides, "");
+  if (toml::table* tyre = file.root_["tyre"].as_table()) {
+    if (const toml::node* ref = tyre->get("file")) {
+      if (!ref->is_string()) {
+        throw InputError(file.name(), "[tyre] file", "must be a string (a model file path)");
+      }
+      const fs::path model_path = resolve_referenced_file(*ref->value<std::string>(), path);
+      toml::table model = parse_toml_file(model_path);
+      // Keys beside `file` override the model file's.
+      for (auto& [key, node] : *tyre) {
+        if (key.str() != "file") model.insert_or_assign(key.str(), node);
+      }
+      for (const auto& [key, node] : model) {
+        if (!tyre->contains(key.str())) {
+          (*file.provenance_)["tyre." + std::string(key.str())] = model_path.string();
+        }
+      }
+      file.root_.insert_or_assign("tyre", std::move(model));
+    }
+  }
+  return file;
+}
+
+CaseFile CaseFile::load_model(const fs::path& path, const std::vector<std::string>& overrides) {
+  CaseFile file(path, parse_toml_file(path));
+  file.apply_overrides(overrides, "");
+  return file;
+}
+
+bool CaseFile::has_section(std::string_view name) const {
+  const toml::node* node = root_.get(name);
+  return node && node->is_table();
+}
+
+ConfigTable CaseFile::section(std::string_view name) const {
+  const toml::node* node = root_.get(name);
+  if (!node) throw InputError(this->name(), "[" + std::string(name) + "]", "section is required");
+  if (!node->is_table()) {
+    throw InputError(this->name(), std::string(name), "must be a table ([" + std::string(name) + "])");
+  }
+  return ConfigTable(*node->as_table(), this->name(), std::string(name), provenance_);
+}
+
+ConfigTable CaseFile::optional_section(std::string_view name) const {
+  if (!root_.get(name)) return ConfigTable(empty_, this->name(), std::string(name), provenance_);
+  return section(name);
+}
+
+ConfigTable CaseFile::top() const { return ConfigTable(root_, name(), "", provenance_); }
+
+void CaseFile::reject_unknown_sections(const std::vector<std::string>& allowed) const {
+  for (const auto& [key, node] : root_) {
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || a == key.str();
+    if (!ok) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "[" : ", [") + a + "]";
+      throw InputError(name(), std::string(key.str()), "unknown section; allowed sections are " + list);
+    }
+  }
+}
+
+}  // namespace rollnoise

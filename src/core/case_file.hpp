@@ -1,0 +1,61 @@
+#pragma once
+// Loading case and model files: TOML parsing with located errors, `[tyre] file = ...`
+// resolution, and `--set section.key=value` overrides, with the origin of every value kept
+// so that messages name the right file.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "core/config_table.hpp"
+
+namespace rollnoise {
+
+// Parses a TOML file; a missing, unreadable or malformed file is an InputError naming the
+// file (and line and column for syntax errors).
+toml::table parse_toml_file(const std::filesystem::path& path);
+
+class CaseFile {
+ public:
+  // Loads `path`, merges the model file named by `[tyre] file` (keys given beside `file`
+  // override the model file's), then applies `overrides` ("section.key=value"; the value is
+  // read as TOML, and as a plain string if it is not valid TOML).
+  static CaseFile load(const std::filesystem::path& path,
+                       const std::vector<std::string>& overrides = {});
+  // A model file: the keys of a [tyre] table at the top level.
+  static CaseFile load_model(const std::filesystem::path& path,
+                             const std::vector<std::string>& overrides = {});
+
+  const std::filesystem::path& path() const noexcept { return path_; }
+  std::string name() const { return path_.string(); }
+  const toml::table& root() const noexcept { return root_; }
+
+  bool has_section(std::string_view name) const;
+  // A top-level table; a missing required one is an InputError.
+  ConfigTable section(std::string_view name) const;
+  // An empty table when absent.
+  ConfigTable optional_section(std::string_view name) const;
+  // The whole file as one table (for model files, whose keys sit at the top level).
+  ConfigTable top() const;
+  // Rejects top-level keys or tables other than `allowed`.
+  void reject_unknown_sections(const std::vector<std::string>& allowed) const;
+
+ private:
+  CaseFile(std::filesystem::path path, toml::table root);
+  void apply_overrides(const std::vector<std::string>& overrides, const std::string& prefix);
+
+  std::filesystem::path path_;
+  toml::table root_;
+  toml::table empty_;
+  std::shared_ptr<Provenance> provenance_;
+};
+
+// Finds a file named in a case file: relative to the case file's folder, then to the current
+// folder, then to each folder above the case file (so "models/tyres/x.toml" works from a case
+// anywhere in the project).
+std::filesystem::path resolve_referenced_file(const std::filesystem::path& referenced,
+                                              const std::filesystem::path& case_file);
+
+}  // namespace rollnoise

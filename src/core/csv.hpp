@@ -1,0 +1,41 @@
+#pragma once
+// Numeric CSV files: a header line of column names, then rows of numbers. Lines starting
+// with '#' are comments. Readers survive arbitrary bytes: anything else is an InputError
+// naming the file, line and column.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace rollnoise {
+
+struct NumericCsv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> columns;  // columns[c][row]
+  std::vector<std::string> comments;         // comment lines, without the leading '#'
+
+  std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+  // Index of a column by name; InputError (naming `source`) when absent.
+  std::size_t column(const std::string& name, const std::string& source) const;
+};
+
+// Parses CSV text; `source` names it in messages. Non-finite values are rejected.
+NumericCsv parse_numeric_csv(const std::string& text, const std::string& source);
+NumericCsv read_numeric_csv(const std::filesystem::path& path);
+
+// The shortest text that reads back as exactly the same double.
+std::string format_number(double value);
+
+// Writes rows of numbers with a header, shortest round-trip formatting.
+class CsvWriter {
+ public:
+  CsvWriter(std::ostream& out, const std::vector<std::string>& header);
+  void row(const double* values, std::size_t count);
+
+ private:
+  std::ostream& out_;
+  std::size_t columns_;
+  std::string line_;
+};
+
+}  // namespace rollnoise

@@ -1,0 +1,87 @@
+#include "core/output_directory.hpp"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+
+namespace {
+
+// ".NAME.TAG-PID", a hidden sibling of the destination. (Built by appending: GCC 12 warns
+// falsely, -Wrestrict, on a chain of string + string here.)
+fs::path sibling(const fs::path& destination, const char* tag) {
+  std::string name = ".";
+  name += destination.filename().string();
+  name += tag;
+  name += std::to_string(::getpid());
+  return destination.parent_path() / name;
+}
+
+bool is_rollnoise_output(const fs::path& dir) {
+  std::error_code ec;
+  return fs::exists(dir / "summary.json", ec) || fs::exists(dir / "report.json", ec);
+}
+
+}  // namespace
+
+StagedOutputDirectory::StagedOutputDirectory(fs::path destination)
+    : destination_(std::move(destination)) {
+  std::error_code ec;
+  if (destination_.filename().empty()) destination_ = destination_.parent_path();
+  if (fs::exists(destination_, ec)) {
+    if (!fs::is_directory(destination_, ec)) {
+      throw InputError("--out", destination_.string(), "exists and is not a folder");
+    }
+    if (!fs::is_empty(destination_, ec) && !is_rollnoise_output(destination_)) {
+      throw InputError("--out", destination_.string(),
+                       "exists and is not an earlier rollnoise output; choose a new folder");
+    }
+  }
+  const fs::path parent = destination_.has_parent_path() ? destination_.parent_path() : fs::path(".");
+  fs::create_directories(parent, ec);
+  if (ec) throw InputError("--out", parent.string(), "cannot create folder: " + ec.message());
+  staging_ = sibling(destination_, ".partial-");
+  fs::remove_all(staging_, ec);
+  fs::create_directory(staging_, ec);
+  if (ec) throw InputError("--out", staging_.string(), "cannot create folder: " + ec.message());
+}
+
+StagedOutputDirectory::~StagedOutputDirectory() {
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+  }
+}
+
+void StagedOutputDirectory::commit() {
+  std::error_code ec;
+  fs::path old;
+  if (fs::exists(destination_, ec)) {
+    old = sibling(destination_, ".old-");
+    fs::remove_all(old, ec);
+    fs::rename(destination_, old, ec);
+    if (ec) throw std::runtime_error("cannot move " + destination_.string() + " aside: " + ec.message());
+  }
+  fs::rename(staging_, destination_, ec);
+  if (ec) {
+    if (!old.empty()) fs::rename(old, destination_, ec);
+    throw std::runtime_error("cannot move results into " + destination_.string() + ": " + ec.message());
+  }
+  committed_ = true;
+  if (!old.empty()) fs::remove_all(old, ec);
+}
+
+void write_text_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,39 @@
+#include "greens/model_factory.hpp"
+
+#include <cmath>
+
+#include "core/config_table.hpp"
+#include "greens/sdof_model.hpp"
+
+namespace rollnoise {
+namespace {
+
+SdofParameters read_sdof_parameters(const ConfigTable& tyre) {
+  SdofParameters p{};
+  p.mass = tyre.positive("mass");
+  // An undamped system never reaches the static equilibrium a run starts from.
+  p.damping = tyre.positive("damping");
+  p.stiffness = tyre.positive("stiffness");
+  p.contact_stiffness = tyre.positive("contact_stiffness");
+  return p;
+}
+
+}  // namespace
+
+std::unique_ptr<GreensModel> make_greens_model(const ConfigTable& tyre) {
+  const std::string model = tyre.choice("model", {"sdof", "coupled_sdof"});
+  std::unique_ptr<GreensModel> result;
+  if (model == "sdof") {
+    result = std::make_unique<SdofModel>(read_sdof_parameters(tyre));
+  } else {
+    const SdofParameters p = read_sdof_parameters(tyre);
+    // G[0] = M/s with M = [[1, c], [c, 1]] is positive definite only for |c| < 1.
+    const double coupling = tyre.between("coupling", -1.0, 1.0, 0.0);
+    const double spacing = tyre.non_negative("spacing");
+    result = std::make_unique<SdofModel>(p, coupling, spacing);
+  }
+  tyre.reject_unknown_keys();
+  return result;
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,23 @@
+#pragma once
+// `rollnoise simulate CASE.toml [--out DIR] [--set section.key=value]...`
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace rollnoise {
+
+struct SimulateOptions {
+  std::string case_file;
+  std::string out;  // empty: [output] directory, else out/<case name>
+  std::vector<std::string> overrides;
+};
+
+// Registers the verb on `app`; the options are filled in by the parser.
+CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options);
+
+int run_simulate(const SimulateOptions& options);
+
+}  // namespace rollnoise
