@@ -1,0 +1,226 @@
+#include "road/random_road.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <utility>
+
+#include <fftw3.h>
+
+#include "core/csv.hpp"
+#include "core/error.hpp"
+
+namespace rollnoise {
+namespace {
+
+// The FFTW planner is not thread-safe; roads may be built from several threads.
+std::mutex& fftw_planner_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+struct FftwFree {
+  void operator()(void* p) const noexcept { fftw_free(p); }
+};
+
+struct FftwPlan {
+  fftw_plan plan = nullptr;
+  FftwPlan(int n, fftw_complex* in, double* out) {
+    const std::lock_guard lock(fftw_planner_mutex());
+    // FFTW_ESTIMATE: no timing-dependent plan choice, so the result does not vary run to run.
+    plan = fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE);
+  }
+  ~FftwPlan() {
+    const std::lock_guard lock(fftw_planner_mutex());
+    if (plan) fftw_destroy_plan(plan);
+  }
+  FftwPlan(const FftwPlan&) = delete;
+  FftwPlan& operator=(const FftwPlan&) = delete;
+};
+
+// Uniform on (0, 1] from the top 53 bits, so that log() below never sees 0. Written out rather
+// than std::uniform_real_distribution / std::normal_distribution, whose algorithms the
+// standard leaves to the implementation: the same seed must give the same road everywhere.
+double uniform_open_closed(std::mt19937_64& engine) {
+  return (static_cast<double>(engine() >> 11) + 1.0) * 0x1.0p-53;
+}
+
+// Box-Muller: two independent standard normals from two uniforms.
+std::pair<double, double> standard_normal_pair(std::mt19937_64& engine) {
+  const double u1 = uniform_open_closed(engine);
+  const double u2 = static_cast<double>(engine() >> 11) * 0x1.0p-53;  // [0, 1)
+  const double radius = std::sqrt(-2.0 * std::log(u1));
+  const double angle = 2.0 * std::numbers::pi * u2;
+  return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+// Smallest n' >= n of the form 2^a 3^b 5^c, sizes for which FFTW is fast.
+std::size_t fft_friendly_size(std::size_t n) {
+  std::size_t best = std::size_t{1};
+  while (best < n) best *= 2;  // a power of two always qualifies
+  for (std::size_t p5 = 1; p5 < 2 * n; p5 *= 5) {
+    for (std::size_t p35 = p5; p35 < 2 * n; p35 *= 3) {
+      std::size_t candidate = p35;
+      while (candidate < n) candidate *= 2;
+      best = std::min(best, candidate);
+    }
+  }
+  return best;
+}
+
+[[noreturn]] void bad(const char* key, const std::string& problem) {
+  throw InputError("", key, problem);
+}
+
+double require_positive(const char* key, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    bad(key, "must be a finite number > 0 (got " + format_number(value) + ")");
+  }
+  return value;
+}
+
+}  // namespace
+
+RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
+  using Spectrum = RandomRoadSpec::Spectrum;
+  if (!std::isfinite(spec.x_max)) throw std::invalid_argument("RandomRoad: x_max must be finite");
+  const double std_dev = require_positive("std_dev", spec.std_dev);
+  const bool gaussian = spec.spectrum == Spectrum::gaussian;
+
+  // The longest and shortest scales of the spectrum set the defaults and the grid.
+  double shortest = 0.0;
+  double longest = 0.0;
+  if (gaussian) {
+    shortest = longest = require_positive("correlation_length", spec.correlation_length);
+  } else {
+    shortest = require_positive("min_wavelength", spec.min_wavelength);
+    longest = require_positive("max_wavelength", spec.max_wavelength);
+    if (!(shortest < longest)) {
+      bad("min_wavelength", "must be less than max_wavelength (got " + format_number(shortest) +
+                                " and " + format_number(longest) + ")");
+    }
+  }
+
+  spacing_ = require_positive("sample_spacing", spec.sample_spacing.value_or(shortest / 16.0));
+  // The grid must resolve the spectrum: the band up to its Nyquist wavenumber 1/(2 spacing);
+  // for the Gaussian spectrum, spacing <= lc/2 leaves out a fraction below exp(-pi^2) ~ 5e-5
+  // of the spectral density peak.
+  if (spacing_ > shortest / 2.0) {
+    bad("sample_spacing", std::string("must be at most ") +
+                              (gaussian ? "correlation_length / 2" : "min_wavelength / 2") +
+                              " to resolve the spectrum (got " + format_number(spacing_) +
+                              ", limit " + format_number(shortest / 2.0) + ")");
+  }
+
+  lead_in_ = spec.lead_in.value_or(2.0 * longest);
+  if (!(lead_in_ >= 0.0) || !std::isfinite(lead_in_)) {
+    bad("lead_in", "must be a finite number >= 0 (got " + format_number(lead_in_) + ")");
+  }
+
+  // Length of the periodic synthesis grid. Beyond [0, x_max] it keeps a margin, so that the
+  // periodic wrap does not correlate the end of the run with its start (Gaussian: R(5 lc) =
+  // e^-25), and it is long enough to hold many modes of the spectrum even for a short run.
+  const double cover = std::max(spec.x_max, 0.0);
+  double period = 0.0;
+  if (gaussian) {
+    period = std::max(cover + 5.0 * longest, 32.0 * longest);
+  } else {
+    const double bandwidth = 1.0 / shortest - 1.0 / longest;  // cycles/m
+    period = std::max({cover + 4.0 * longest, 8.0 * longest, 16.0 / bandwidth});
+  }
+  // Compared as doubles: an absurd ratio must not overflow the conversion to an integer.
+  const double needed = std::ceil(period / spacing_);
+  if (!(needed <= static_cast<double>(max_grid_size))) {
+    bad("sample_spacing", "the road needs " + format_number(needed) +
+                              " samples, more than the limit of 2^26; use a larger "
+                              "sample_spacing or a shorter run");
+  }
+  const std::size_t n = fft_friendly_size(static_cast<std::size_t>(needed));
+  grid_size_ = n;
+  const double length = spacing_ * static_cast<double>(n);
+  const std::size_t last = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(cover / spacing_)));
+
+  // Random complex amplitudes for modes m = 1 .. (n-1)/2, wavenumber m/length (cycles/m):
+  // a complex normal times the square root of the spectral density. The mean (m = 0) and the
+  // Nyquist mode of an even grid are left at 0 (the latter is beyond both spectra). Every
+  // mode draws its pair of normals, so the sequence of draws does not depend on the spectrum.
+  std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
+  std::unique_ptr<double[], FftwFree> grid(fftw_alloc_real(n));
+  if (!spectrum || !grid) throw std::bad_alloc();
+  const FftwPlan plan(static_cast<int>(n), spectrum.get(), grid.get());
+  if (!plan.plan) throw std::runtime_error("RandomRoad: FFTW could not plan the synthesis");
+
+  std::mt19937_64 engine(spec.seed);
+  for (std::size_t m = 0; m <= n / 2; ++m) {
+    spectrum[m][0] = 0.0;
+    spectrum[m][1] = 0.0;
+  }
+  const double band_low = 1.0 / longest;
+  const double band_high = 1.0 / shortest;
+  for (std::size_t m = 1; 2 * m < n; ++m) {
+    const auto [re, im] = standard_normal_pair(engine);
+    const double wavenumber = static_cast<double>(m) / length;
+    double amplitude = 0.0;
+    if (gaussian) {
+      // Two-sided density of R(xi) = s^2 exp(-(xi/lc)^2) in k = 2 pi n is
+      // s^2 lc / (2 sqrt(pi)) exp(-k^2 lc^2 / 4); its square root, up to a constant factor
+      // that the scaling below removes.
+      const double a = std::numbers::pi * wavenumber * longest;
+      amplitude = std::exp(-0.5 * a * a);
+    } else {
+      amplitude = (wavenumber >= band_low && wavenumber <= band_high) ? 1.0 : 0.0;
+    }
+    spectrum[m][0] = amplitude * re;
+    spectrum[m][1] = amplitude * im;
+  }
+  fftw_execute(plan.plan);
+
+  // Scale so that the sample standard deviation of the stationary profile over the grid points
+  // covering [0, x_max] (j = 0 .. last) is exactly std_dev: sqrt(sum (r_j - mean)^2 / count),
+  // the 1/count form, since these points are the whole road the run sees. The mean is not
+  // removed: it is the road's own (near zero) mean over the run. The lead-in window is applied
+  // afterwards, so it lowers the heights within lead_in and leaves the rest as scaled.
+  const std::size_t count = last + 1;
+  double mean = 0.0;
+  for (std::size_t j = 0; j < count; ++j) mean += grid[j];
+  mean /= static_cast<double>(count);
+  double sum_sq = 0.0;
+  for (std::size_t j = 0; j < count; ++j) sum_sq += (grid[j] - mean) * (grid[j] - mean);
+  const double deviation = std::sqrt(sum_sq / static_cast<double>(count));
+  if (!(deviation > 0.0) || !std::isfinite(deviation)) {
+    throw std::logic_error("RandomRoad: the synthesised profile has no variance");
+  }
+  const double scale = std_dev / deviation;
+
+  samples_.resize(count);
+  for (std::size_t j = 0; j < count; ++j) {
+    double value = scale * grid[j];
+    const double x = spacing_ * static_cast<double>(j);
+    // Raised cosine: 0 with zero slope at x = 0, 1 with zero slope at lead_in, so the road
+    // leaves the flat lead-in without a jump or a kink.
+    if (x < lead_in_) value *= 0.5 * (1.0 - std::cos(std::numbers::pi * x / lead_in_));
+    samples_[j] = value;
+  }
+}
+
+std::string RandomRoad::type() const { return "random"; }
+
+double RandomRoad::height(double x) const {
+  if (x < 0.0) return 0.0;  // lead-in convention (road_profile.hpp)
+  const double t = x / spacing_;
+  const std::size_t last = samples_.size() - 1;
+  if (!(t <= static_cast<double>(last))) {  // also NaN
+    throw std::logic_error("RandomRoad::height: x = " + format_number(x) +
+                           " m is beyond the generated range [0, " + format_number(end()) + "]");
+  }
+  const std::size_t i = std::min(static_cast<std::size_t>(t), last - 1);
+  const double f = t - static_cast<double>(i);
+  // (1-f) a + f b: exact at the grid points, including the last one (f = 1).
+  return (1.0 - f) * samples_[i] + f * samples_[i + 1];
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,105 @@
+// make_road_profile: reads a [road] table and builds the profile it describes.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/case_file.hpp"
+#include "core/config_table.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "road/file_road.hpp"
+#include "road/flat_road.hpp"
+#include "road/random_road.hpp"
+#include "road/road_profile.hpp"
+#include "road/sine_road.hpp"
+
+namespace rollnoise {
+namespace {
+
+// The profile constructors check their parameters without knowing the case file: their
+// InputErrors carry the bare key and no source. Name the key as "[road] key" in its file.
+// Errors that already name a source (a profile file) pass through.
+template <class Build>
+std::unique_ptr<RoadProfile> build_named(const ConfigTable& road, Build build) {
+  try {
+    return build();
+  } catch (const InputError& e) {
+    if (!e.source().empty() || e.key().empty()) throw;
+    road.fail(e.key(), e.problem());
+  }
+}
+
+std::unique_ptr<RoadProfile> make_sine(const ConfigTable& road) {
+  const double amplitude = road.positive("amplitude");
+  const double wavelength = road.positive("wavelength");
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return std::make_unique<SineRoad>(amplitude, wavelength); });
+}
+
+std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) {
+  RandomRoadSpec spec;
+  spec.std_dev = road.positive("std_dev");
+  const bool has_lc = road.contains("correlation_length");
+  const bool has_min = road.contains("min_wavelength");
+  const bool has_max = road.contains("max_wavelength");
+  if (has_lc && (has_min || has_max)) {
+    road.fail("correlation_length",
+              "give either correlation_length (Gaussian autocorrelation) or min_wavelength and "
+              "max_wavelength (band-limited spectrum), not both");
+  }
+  if (has_lc) {
+    spec.spectrum = RandomRoadSpec::Spectrum::gaussian;
+    spec.correlation_length = road.positive("correlation_length");
+  } else if (has_min || has_max) {
+    if (!has_min) road.fail("min_wavelength", "is required with max_wavelength (band-limited spectrum)");
+    if (!has_max) road.fail("max_wavelength", "is required with min_wavelength (band-limited spectrum)");
+    spec.spectrum = RandomRoadSpec::Spectrum::band;
+    spec.min_wavelength = road.positive("min_wavelength");
+    spec.max_wavelength = road.positive("max_wavelength");
+    if (!(spec.min_wavelength < spec.max_wavelength)) {
+      road.fail("min_wavelength", "must be less than max_wavelength (got " +
+                                      format_number(spec.min_wavelength) + " and " +
+                                      format_number(spec.max_wavelength) + ")");
+    }
+  } else {
+    road.fail("correlation_length",
+              "is required, or else min_wavelength and max_wavelength (band-limited spectrum)");
+  }
+  if (road.contains("sample_spacing")) spec.sample_spacing = road.positive("sample_spacing");
+  if (road.contains("lead_in")) spec.lead_in = road.non_negative("lead_in");
+  spec.seed = static_cast<std::uint64_t>(
+      road.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
+  spec.x_max = x_max;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return std::make_unique<RandomRoad>(spec); });
+}
+
+std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
+  const std::string name = road.text("file");
+  if (name.empty()) road.fail("file", "must name a CSV file (columns x,z in m)");
+  road.reject_unknown_keys();
+  // Relative to the file that set the key (the case file, or a model file it includes).
+  const auto path = resolve_referenced_file(name, road.source_of("file"));
+  return std::make_unique<FileRoad>(path, x_min, x_max);
+}
+
+}  // namespace
+
+std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max) {
+  if (std::isnan(x_min) || std::isnan(x_max)) {
+    throw std::invalid_argument("make_road_profile: the x range must be numbers");
+  }
+  const std::string type = road.choice("type", {"flat", "sine", "random", "file"});
+  if (type == "flat") {
+    road.reject_unknown_keys();
+    return std::make_unique<FlatRoad>();
+  }
+  if (type == "sine") return make_sine(road);
+  if (type == "random") return make_random(road, x_max);
+  return make_file(road, x_min, x_max);
+}
+
+}  // namespace rollnoise

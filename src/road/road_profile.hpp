@@ -1,0 +1,28 @@
+#pragma once
+// A road surface profile r(x) along the direction of travel (m, upward; MODEL.md §1).
+//
+// Convention shared by every profile: the road is flat, r = 0, for x < 0. That is the lead-in
+// on which the pre-history of the static load rolled, so a run starts in static equilibrium
+// and points that trail the first one (coupled_sdof) see a flat road until they reach x = 0.
+#include <memory>
+#include <string>
+
+namespace rollnoise {
+
+class ConfigTable;
+
+class RoadProfile {
+ public:
+  virtual ~RoadProfile() = default;
+  // "flat", "sine", "random", "file".
+  virtual std::string type() const = 0;
+  // Height at x (m). Defined for every x; r(x) = 0 for x < 0.
+  virtual double height(double x) const = 0;
+};
+
+// Builds the profile of a [road] table. The run will look at x in [x_min, x_max]; profiles
+// that are generated or read cover at least that range (a file that does not is an
+// InputError). Unknown keys are rejected.
+std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max);
+
+}  // namespace rollnoise
