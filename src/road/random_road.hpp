@@ -11,7 +11,8 @@
 // grid points covering [0, x_max] is exactly std_dev; a raised-cosine window over the first
 // lead_in metres then brings it to r(0) = 0, so it joins the flat lead-in (x < 0) smoothly.
 // The road is fixed by the seed and the synthesis grid, which depends on x_max and the
-// spectrum: the same case gives the same road, a longer run a different one.
+// spectrum. The case file's road is generated over `length` (default 100 m) or the run's
+// length if that is longer: runs of different duration see the same road up to `length`.
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,5 @@
 // make_road_profile: reads a [road] table and builds the profile it describes.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -72,7 +73,9 @@ std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) 
   if (road.contains("lead_in")) spec.lead_in = road.non_negative("lead_in");
   spec.seed = static_cast<std::uint64_t>(
       road.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
-  spec.x_max = x_max;
+  // A fixed stretch of road, so that runs of different duration on the same case see the same
+  // profile; a run longer than `length` gets a longer (and so different) road.
+  spec.x_max = std::max(x_max, road.positive("length", 100.0));
   road.reject_unknown_keys();
   return build_named(road, [&] { return std::make_unique<RandomRoad>(spec); });
 }

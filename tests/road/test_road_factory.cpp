@@ -108,7 +108,7 @@ TEST(RoadFactory, BuildsTheProfilesItDescribes) {
   const SineRoad direct_sine(2e-3, 0.3);
   for (double x : {-0.1, 0.0, 0.05, 0.2, 7.3}) EXPECT_EQ(sine->height(x), direct_sine.height(x));
 
-  // Defaults: seed 1, spacing lc/16, lead-in 2 lc.
+  // Defaults: seed 1, spacing lc/16, lead-in 2 lc, 100 m of road (more than the run's 10 m).
   const auto random = build("[road]\ntype = \"random\"\nstd_dev = 1e-3\ncorrelation_length = 0.1\n", -1.0, 10.0);
   RandomRoadSpec spec;
   spec.std_dev = 1e-3;
@@ -116,10 +116,13 @@ TEST(RoadFactory, BuildsTheProfilesItDescribes) {
   spec.sample_spacing = 0.1 / 16.0;
   spec.lead_in = 0.2;
   spec.seed = 1;
-  spec.x_max = 10.0;
+  spec.x_max = 100.0;
   const RandomRoad direct_random(spec);
   EXPECT_EQ(random->type(), "random");
   for (double x : {-0.1, 0.0, 0.05, 0.2, 7.3, 10.0}) EXPECT_EQ(random->height(x), direct_random.height(x));
+  // A shorter run sees the same road.
+  const auto shorter = build("[road]\ntype = \"random\"\nstd_dev = 1e-3\ncorrelation_length = 0.1\n", -1.0, 3.0);
+  for (double x : {0.05, 0.2, 2.9}) EXPECT_EQ(shorter->height(x), random->height(x));
 
   const auto band = build("[road]\ntype = \"random\"\nstd_dev = 1e-3\nmin_wavelength = 0.02\n"
                           "max_wavelength = 0.4\nseed = 4\n");
