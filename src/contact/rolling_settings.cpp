@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/config_table.hpp"
+#include "core/csv.hpp"
 
 namespace rollnoise {
 
@@ -27,8 +28,11 @@ RollingSettings read_rolling_settings(const ConfigTable& rolling) {
   }
   // The direct engine keeps the whole history: past ~2·10⁷ steps it no longer fits in memory.
   if (steps > 2e7) {
-    rolling.fail("time_step", "gives " + std::to_string(static_cast<long long>(steps)) +
+    rolling.fail("time_step", "gives " + format_number(steps) +
                                   " steps; at most 2e7 are allowed (raise time_step or shorten duration)");
+  }
+  if (!std::isfinite(s.speed * s.duration)) {
+    rolling.fail("duration", "speed × duration (the length of road rolled over, m) must be a finite number");
   }
   return s;
 }

@@ -12,6 +12,7 @@ toml::table parse_toml_file(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path.string(), "", "file not found");
   if (fs::is_directory(path, ec)) throw InputError(path.string(), "", "is a folder, not a file");
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string(), "", "is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "", "cannot be opened for reading");
   std::ostringstream buffer;

@@ -24,13 +24,13 @@ std::string shell_quote(const std::string& text) {
 bool write_plot(const std::filesystem::path& dir, const std::string& name, const std::string& script) {
   write_text_file(dir / (name + ".gp"), script);
   if (!gnuplot_available()) {
-    std::fprintf(stderr, "warning: gnuplot is not installed; wrote %s.gp but no PNG\n", name.c_str());
+    std::fprintf(stderr, "rollnoise: warning: gnuplot is not installed; wrote %s.gp but no PNG\n", name.c_str());
     return false;
   }
   const std::string command =
       "cd " + shell_quote(dir.string()) + " && gnuplot " + shell_quote(name + ".gp") + " 2>&1";
   if (std::system(command.c_str()) != 0) {
-    std::fprintf(stderr, "warning: gnuplot failed on %s.gp; no PNG written\n", name.c_str());
+    std::fprintf(stderr, "rollnoise: warning: gnuplot failed on %s.gp; no PNG written\n", name.c_str());
     return false;
   }
   return true;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,14 @@ StagedOutputDirectory::StagedOutputDirectory(fs::path destination)
     : destination_(std::move(destination)) {
   std::error_code ec;
   if (destination_.filename().empty()) destination_ = destination_.parent_path();
+  // The destination is renamed into place: it cannot be the folder we stand in, or hold it.
+  const fs::path here = fs::current_path(ec);
+  const fs::path target = fs::weakly_canonical(fs::absolute(destination_, ec), ec);
+  const auto mismatch = std::mismatch(target.begin(), target.end(), here.begin(), here.end());
+  if (destination_.empty() || mismatch.first == target.end()) {
+    throw InputError("--out", destination_.empty() ? "\"\"" : destination_.string(),
+                     "is the current folder or one that holds it; choose a new folder");
+  }
   if (fs::exists(destination_, ec)) {
     if (!fs::is_directory(destination_, ec)) {
       throw InputError("--out", destination_.string(), "exists and is not a folder");
@@ -44,6 +53,9 @@ StagedOutputDirectory::StagedOutputDirectory(fs::path destination)
     }
   }
   const fs::path parent = destination_.has_parent_path() ? destination_.parent_path() : fs::path(".");
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    created_parents_.push_back(p);
+  }
   fs::create_directories(parent, ec);
   if (ec) throw InputError("--out", parent.string(), "cannot create folder: " + ec.message());
   staging_ = sibling(destination_, ".partial-");
@@ -56,6 +68,7 @@ StagedOutputDirectory::~StagedOutputDirectory() {
   if (!committed_) {
     std::error_code ec;
     fs::remove_all(staging_, ec);
+    for (const auto& p : created_parents_) fs::remove(p, ec);  // only while empty
   }
 }
 

@@ -3,6 +3,8 @@
 // renames it into place only when everything is written, so a failed run leaves no
 // half-written results (and an earlier complete result stays until the new one is whole).
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace rollnoise {
 
@@ -24,6 +26,8 @@ class StagedOutputDirectory {
  private:
   std::filesystem::path destination_;
   std::filesystem::path staging_;
+  // Parent folders this object created, deepest first: removed again if the run fails.
+  std::vector<std::filesystem::path> created_parents_;
   bool committed_ = false;
 };
 

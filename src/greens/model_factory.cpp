@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/config_table.hpp"
+#include "core/error.hpp"
 #include "greens/sdof_model.hpp"
 
 namespace rollnoise {
@@ -33,6 +34,13 @@ std::unique_ptr<GreensModel> make_greens_model(const ConfigTable& tyre) {
     result = std::make_unique<SdofModel>(p, coupling, spacing);
   }
   tyre.reject_unknown_keys();
+  // Values that are each positive can still combine beyond double range (mass = 1e-300).
+  const double fastest = result->fastest_rate();
+  const double slowest = result->slowest_decay_rate();
+  if (!std::isfinite(fastest) || !(slowest > 0.0) || !result->static_compliance().allFinite()) {
+    throw InputError(tyre.source_of("mass"), "[tyre] mass, damping, stiffness, contact_stiffness",
+                     "together give rates or compliances outside the range of doubles; use physical values");
+  }
   return result;
 }
 

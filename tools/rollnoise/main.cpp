@@ -3,21 +3,44 @@
 // allowed), 1 internal failure.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "core/error.hpp"
 #include "simulate_command.hpp"
 
+namespace {
+
+// Command-line mistakes read like every other bad input: one line, exit status 2.
+std::string command_line_error(const CLI::App*, const CLI::Error& error) {
+  return "rollnoise: error: command line: " + std::string(error.what()) + " (try --help)\n";
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"rollnoise " ROLLNOISE_VERSION
                ": tyre/road noise from first principles (rolling contact with Green's functions)"};
+  app.name("rollnoise");
   app.require_subcommand(1);
   app.set_version_flag("--version", ROLLNOISE_VERSION);
+  app.failure_message(command_line_error);
 
   rollnoise::SimulateOptions simulate;
   CLI::App* simulate_cmd = rollnoise::add_simulate_command(app, simulate);
 
+  // An unknown verb is named as such (CLI11 would only say that a verb is required).
+  const auto is_verb = [&app](const std::string& word) {
+    for (const CLI::App* verb : app.get_subcommands([](CLI::App*) { return true; }))
+      if (verb->get_name() == word) return true;
+    return false;
+  };
+  if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate (see 'rollnoise --help')\n",
+                 argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

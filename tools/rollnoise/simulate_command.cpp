@@ -67,7 +67,8 @@ int run_simulate(const SimulateOptions& options) {
     StagedOutputDirectory staged(out);
 
     for (const auto& warning : check_time_step(*model, settings.time_step)) {
-      std::fprintf(stderr, "rollnoise: warning: %s: %s\n", file.name().c_str(), warning.c_str());
+      std::fprintf(stderr, "rollnoise: warning: %s: %s\n", rolling.source_of("time_step").c_str(),
+                   warning.c_str());
     }
     ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), settings.steps() + 1);
     const ContactTrace trace = simulate_point_contact(*model, *road, settings, &progress);

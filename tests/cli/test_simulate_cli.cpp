@@ -1,0 +1,723 @@
+// End-to-end tests of `rollnoise simulate`: the real program, run as a user runs it, in a fresh
+// folder per test. They check the contract of ARCHITECTURE.md and issue 2: exit statuses
+// (0 success, 2 bad input), one message per bad input naming the file, the key and what is
+// allowed, atomic output (no partial folder, ever), warnings, --help, and quiet progress.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// Helpers: files, a per-test folder, running the program.
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  ASSERT_TRUE(out) << "cannot write " << path;
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::size_t count_lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+bool gnuplot_installed() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+struct RunResult {
+  int status = -1;  // the exit status; 128 + signal when the program was killed by a signal
+  std::string out;
+  std::string err;
+};
+
+// A fresh folder under the system's temp folder, removed at the end of the test. The program
+// runs in work(); its stdout and stderr are captured beside work(), so that work() holds only
+// what the test wrote and what the program made.
+class Workspace {
+ public:
+  Workspace() {
+    static std::atomic<int> counter{0};
+    std::string name = "rollnoise_cli_";
+    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
+      name += std::string(info->test_suite_name()) + "_" + info->name();
+    }
+    for (char& c : name) {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+    }
+    name += "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
+    root_ = fs::temp_directory_path() / name;
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "work");
+  }
+  ~Workspace() {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  fs::path work() const { return root_ / "work"; }
+  fs::path path(const std::string& name) const { return work() / name; }
+  void write(const std::string& name, const std::string& text) const { write_text(path(name), text); }
+
+  // Runs `prefix ROLLNOISE_BINARY args...` in work(), stdin from /dev/null.
+  RunResult run(const std::vector<std::string>& args, const std::string& prefix = "") const {
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on `" " + std::string` here.
+    std::string command = "cd ";
+    command += shell_quote(work().string());
+    command += " && ";
+    command += prefix;
+    command += shell_quote(ROLLNOISE_BINARY);
+    for (const auto& arg : args) {
+      command += ' ';
+      command += shell_quote(arg);
+    }
+    command += " </dev/null >";
+    command += shell_quote((root_ / "stdout.txt").string());
+    command += " 2>";
+    command += shell_quote((root_ / "stderr.txt").string());
+    const int raw = std::system(command.c_str());
+    RunResult result;
+    if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
+    if (raw != -1 && WIFSIGNALED(raw)) result.status = 128 + WTERMSIG(raw);
+    result.out = read_text(root_ / "stdout.txt");
+    result.err = read_text(root_ / "stderr.txt");
+    return result;
+  }
+
+  // Names in work(), hidden ones included, with "/" after folders; recursive, so that a folder
+  // left behind anywhere shows.
+  std::set<std::string> entries() const {
+    std::set<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(work())) {
+      names.insert(fs::relative(entry.path(), work()).string() + (entry.is_directory() ? "/" : ""));
+    }
+    return names;
+  }
+
+  // Hidden staging or backup folders (".NAME.partial-PID", ".NAME.old-PID") in work().
+  std::vector<std::string> leftovers() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(work())) {
+      const std::string name = entry.path().filename().string();
+      if (starts_with(name, ".")) names.push_back(name);
+    }
+    return names;
+  }
+
+ private:
+  fs::path root_;
+};
+
+std::string describe(const RunResult& r) {
+  return "exit status " + std::to_string(r.status) + "\n--- stderr ---\n" + r.err +
+         "--- stdout ---\n" + r.out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Case files: the project's own cases, shortened, with keys set or removed.
+
+struct Edit {
+  std::string section;
+  std::string key;
+  std::optional<std::string> value;  // the TOML text of the value; nullopt removes the key
+};
+
+// Sets (or removes) `key` in `[section]`: replaces its line, else adds it after the header,
+// else appends the section.
+std::string edit_case(const std::string& text, const Edit& edit) {
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::string section;
+  std::optional<std::size_t> header;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    if (line[first] == '[') {
+      section = line.substr(first + 1, line.find(']') - first - 1);
+      if (section == edit.section) header = i;
+      continue;
+    }
+    if (section != edit.section) continue;
+    const std::string rest = line.substr(first);
+    if (starts_with(rest, edit.key) &&
+        (rest.size() == edit.key.size() || rest[edit.key.size()] == ' ' || rest[edit.key.size()] == '=')) {
+      if (edit.value) {
+        lines[i] = edit.key + " = " + *edit.value;
+      } else {
+        lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(i));
+      }
+      header.reset();
+      section = "\x01done";
+      break;
+    }
+  }
+  if (section != "\x01done" && edit.value) {
+    const std::string line = edit.key + " = " + *edit.value;
+    if (header) {
+      lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(*header + 1), line);
+    } else {
+      lines.push_back("");
+      lines.push_back("[" + edit.section + "]");
+      lines.push_back(line);
+    }
+  }
+  std::string out;
+  for (const auto& line : lines) out += line + "\n";
+  return out;
+}
+
+std::string edit_case(std::string text, const std::vector<Edit>& edits) {
+  for (const auto& edit : edits) text = edit_case(text, edit);
+  return text;
+}
+
+// One of models/cases/*.toml, shortened to 0.05 s (501 samples).
+std::string project_case(const std::string& name = "larsson2000_sdof_sine.toml") {
+  const fs::path path = fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "cases" / name;
+  const std::string text = read_text(path);
+  EXPECT_FALSE(text.empty()) << "cannot read " << path;
+  return edit_case(text, {{"rolling", "duration", "0.05"}});
+}
+
+// [road] type = "file" reading `csv`: the sine road's keys go.
+std::vector<Edit> file_road(const std::string& csv) {
+  return {{"road", "type", "\"file\""},
+          {"road", "amplitude", std::nullopt},
+          {"road", "wavelength", std::nullopt},
+          {"road", "file", "\"" + csv + "\""}};
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  const std::string text = read_text(path);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& error) {
+    ADD_FAILURE() << path << " is not valid JSON: " << error.what() << "\n" << text;
+    return nlohmann::json::object();
+  }
+}
+
+std::string first_line(const fs::path& path) {
+  std::istringstream in(read_text(path));
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Success.
+
+TEST(SimulateCli, SdofSineWritesContactCsvSummaryAndPlotScript) {
+  Workspace ws;
+  ws.write("sdof.toml", project_case());
+  const RunResult r = ws.run({"simulate", "sdof.toml", "--out", "result"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  if (gnuplot_installed()) {
+    EXPECT_EQ(r.err, "") << "no warnings and no progress expected";
+  } else {
+    EXPECT_TRUE(contains(r.err, "gnuplot")) << "only the missing-gnuplot warning expected:\n" << r.err;
+  }
+
+  const fs::path out = ws.path("result");
+  ASSERT_TRUE(fs::is_directory(out));
+  EXPECT_TRUE(fs::is_regular_file(out / "contact.gp"));
+  EXPECT_EQ(first_line(out / "contact.csv"), "time,road_1,displacement_1,force_1");
+  // 0.05 s at 1e-4 s: 500 steps, 501 samples, plus the header.
+  EXPECT_EQ(count_lines(read_text(out / "contact.csv")), 502u);
+
+  const nlohmann::json summary = read_json(out / "summary.json");
+  ASSERT_TRUE(summary.contains("points"));
+  ASSERT_TRUE(summary["points"].is_array());
+  ASSERT_EQ(summary["points"].size(), 1u);
+  const nlohmann::json& point = summary["points"][0];
+  for (const char* key : {"max_force_N", "mean_force_N", "contact_fraction", "min_gap_m"}) {
+    ASSERT_TRUE(point.contains(key)) << key;
+    EXPECT_TRUE(point[key].is_number()) << key << " = " << point[key];
+  }
+  EXPECT_GT(point["max_force_N"].get<double>(), 0.0);
+  EXPECT_GE(point["contact_fraction"].get<double>(), 0.0);
+  EXPECT_LE(point["contact_fraction"].get<double>(), 1.0);
+  // Static load 4 N: the sine road lifts the peak above it.
+  EXPECT_GT(point["max_force_N"].get<double>(), 4.0);
+  EXPECT_TRUE(summary.contains("lcp_iterations"));
+  ASSERT_TRUE(summary.contains("wall_time_s"));
+  EXPECT_GE(summary["wall_time_s"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(summary["settings"]["static_load_N"].get<double>(), 4.0);
+  EXPECT_EQ(summary["settings"]["steps"].get<long>(), 500);
+  EXPECT_EQ(summary["model"], "sdof");
+  EXPECT_EQ(summary["road"], "sine");
+
+  EXPECT_TRUE(ws.leftovers().empty()) << "hidden folder left: " << ws.leftovers().front();
+  std::set<std::string> entries = ws.entries();
+  entries.erase("result/contact.png");  // drawn only when gnuplot is installed
+  EXPECT_EQ(entries, (std::set<std::string>{"sdof.toml", "result/", "result/contact.csv",
+                                            "result/summary.json", "result/contact.gp"}))
+      << "only the case and the output folder";
+}
+
+TEST(SimulateCli, CoupledSdofWritesColumnsForBothPoints) {
+  Workspace ws;
+  ws.write("coupled.toml",
+           edit_case(project_case("larsson2000_coupled_sine.toml"), {{"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "coupled.toml", "--out", "coupled"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_EQ(first_line(ws.path("coupled") / "contact.csv"),
+            "time,road_1,displacement_1,force_1,road_2,displacement_2,force_2");
+  const nlohmann::json summary = read_json(ws.path("coupled") / "summary.json");
+  ASSERT_EQ(summary["points"].size(), 2u);
+  for (const auto& point : summary["points"]) {
+    for (const char* key : {"max_force_N", "mean_force_N", "contact_fraction", "min_gap_m"}) {
+      EXPECT_TRUE(point.contains(key) && point[key].is_number()) << key;
+    }
+  }
+  EXPECT_EQ(summary["model"], "coupled_sdof");
+  EXPECT_FALSE(fs::exists(ws.path("coupled") / "contact.gp")) << "plots = false";
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+TEST(SimulateCli, SetOverridesStaticLoad) {
+  Workspace ws;
+  ws.write("sdof.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "sdof.toml", "--out", "out", "--set", "rolling.static_load=3"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const nlohmann::json summary = read_json(ws.path("out") / "summary.json");
+  EXPECT_DOUBLE_EQ(summary["settings"]["static_load_N"].get<double>(), 3.0);
+  EXPECT_NEAR(summary["points"][0]["static_force_N"].get<double>(), 3.0, 1e-9);
+}
+
+TEST(SimulateCli, RunningTwiceReplacesTheEarlierOutput) {
+  Workspace ws;
+  ws.write("sdof.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
+  RunResult r = ws.run({"simulate", "sdof.toml", "--out", "out"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_DOUBLE_EQ(read_json(ws.path("out") / "summary.json")["settings"]["static_load_N"].get<double>(), 4.0);
+  ws.write("out/stale.txt", "from an earlier run\n");
+
+  r = ws.run({"simulate", "sdof.toml", "--out", "out", "--set", "rolling.static_load=3"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_DOUBLE_EQ(read_json(ws.path("out") / "summary.json")["settings"]["static_load_N"].get<double>(), 3.0);
+  EXPECT_FALSE(fs::exists(ws.path("out") / "stale.txt")) << "the earlier output is replaced, not merged";
+  EXPECT_TRUE(ws.leftovers().empty()) << "hidden folder left: " << ws.leftovers().front();
+  EXPECT_EQ(ws.entries(), (std::set<std::string>{"sdof.toml", "out/", "out/contact.csv", "out/summary.json"}));
+}
+
+TEST(SimulateCli, OutputDirectoryFromTheCaseFile) {
+  Workspace ws;
+  ws.write("sdof.toml", edit_case(project_case(), {{"output", "plots", "false"},
+                                                   {"output", "directory", "\"from_case\""}}));
+  const RunResult r = ws.run({"simulate", "sdof.toml"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_TRUE(fs::is_regular_file(ws.path("from_case") / "summary.json"));
+}
+
+TEST(SimulateCli, FileRoadRuns) {
+  Workspace ws;
+  std::string csv = "# a ramp, x and z in m\nx,z\n";
+  for (int i = 0; i <= 100; ++i) csv += std::to_string(i * 0.001) + "," + std::to_string(i * 1e-5) + "\n";
+  ws.write("ramp.csv", csv);
+  ws.write("ramp.toml", edit_case(project_case(), file_road("ramp.csv")));
+  const RunResult r = ws.run({"simulate", "ramp.toml", "--out", "out"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_EQ(read_json(ws.path("out") / "summary.json")["road"], "file");
+}
+
+TEST(SimulateCli, CoarseTimeStepWarnsAndRuns) {
+  Workspace ws;
+  ws.write("coarse.toml",
+           edit_case(project_case(), {{"rolling", "time_step", "5e-3"}, {"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "coarse.toml", "--out", "out"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_TRUE(starts_with(r.err, "rollnoise: warning: ")) << r.err;
+  EXPECT_TRUE(contains(r.err, "time_step")) << r.err;
+  EXPECT_TRUE(contains(r.err, "coarse.toml")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  const nlohmann::json summary = read_json(ws.path("out") / "summary.json");
+  ASSERT_TRUE(summary["warnings"].is_array());
+  EXPECT_FALSE(summary["warnings"].empty()) << "summary.json keeps the warning";
+}
+
+TEST(SimulateCli, ProgressIsQuietWhenStderrIsNotATerminal) {
+  // Long enough (some 80 000 steps) that a terminal would show progress.
+  Workspace ws;
+  ws.write("long.toml",
+           edit_case(project_case(), {{"rolling", "duration", "8.0"}, {"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "long.toml", "--out", "out"}, "env -u CI ");
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_EQ(r.err, "") << "progress must stay off when stderr is a file";
+}
+
+TEST(SimulateCli, ProgressIsShownOnATerminalForLongRunsOnly) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs script(1) for a terminal";
+  Workspace ws;
+  ws.write("case.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
+  ws.write("long.toml",
+           edit_case(project_case(), {{"rolling", "duration", "8.0"}, {"output", "plots", "false"}}));
+  // script(1) runs the program on a pseudo-terminal and copies what it shows to stdout.
+  const auto on_terminal = [&](const std::string& case_name, const std::string& out) {
+    const std::string inner = "env -u CI " + shell_quote(ROLLNOISE_BINARY) + " simulate " +
+                              shell_quote(case_name) + " --out " + shell_quote(out);
+    const std::string command = "cd " + shell_quote(ws.work().string()) + " && script -qec " +
+                                shell_quote(inner) + " /dev/null > ../terminal.txt 2>&1";
+    const auto start = std::chrono::steady_clock::now();
+    const int raw = std::system(command.c_str());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_TRUE(raw != -1 && WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << read_text(ws.work() / ".." / "terminal.txt");
+    return std::make_pair(read_text(ws.work() / ".." / "terminal.txt"), seconds);
+  };
+  const auto [short_text, short_seconds] = on_terminal("case.toml", "short");
+  if (short_seconds < 0.8) {
+    EXPECT_FALSE(contains(short_text, "elapsed")) << "a short run shows no progress:\n" << short_text;
+    EXPECT_FALSE(contains(short_text, "done in")) << short_text;
+  }
+  const auto [long_text, long_seconds] = on_terminal("long.toml", "long");
+  if (long_seconds < 1.5) GTEST_SKIP() << "the long run took only " << long_seconds << " s on this machine";
+  EXPECT_TRUE(contains(long_text, "simulate long.toml")) << long_text;
+  EXPECT_TRUE(contains(long_text, "done in")) << long_text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Help and verbs.
+
+TEST(SimulateCli, HelpOnTheProgramAndOnSimulate) {
+  Workspace ws;
+  RunResult r = ws.run({"--help"});
+  EXPECT_EQ(r.status, 0) << describe(r);
+  EXPECT_TRUE(contains(r.out, "simulate")) << r.out;
+
+  r = ws.run({"simulate", "--help"});
+  EXPECT_EQ(r.status, 0) << describe(r);
+  EXPECT_TRUE(contains(r.out, "--out")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--set")) << r.out;
+  EXPECT_TRUE(ws.entries().empty()) << "--help writes nothing";
+}
+
+TEST(SimulateCli, NoVerbIsBadInput) {
+  Workspace ws;
+  const RunResult r = ws.run({});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_FALSE(r.err.empty());
+}
+
+TEST(SimulateCli, UnknownVerbIsBadInput) {
+  Workspace ws;
+  const RunResult r = ws.run({"simulat", "case.toml"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_FALSE(r.err.empty());
+}
+
+TEST(SimulateCli, SimulateWithoutCaseIsBadInput) {
+  Workspace ws;
+  const RunResult r = ws.run({"simulate"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "case")) << r.err;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output folders that must not be touched.
+
+TEST(SimulateCli, ForeignFolderAsOutIsLeftAlone) {
+  Workspace ws;
+  ws.write("sdof.toml", project_case());
+  fs::create_directory(ws.path("mine"));
+  ws.write("mine/thesis.tex", "do not lose me\n");
+  const RunResult r = ws.run({"simulate", "sdof.toml", "--out", "mine"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(starts_with(r.err, "rollnoise: error: ")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_TRUE(contains(r.err, "mine")) << r.err;
+  EXPECT_EQ(read_text(ws.path("mine/thesis.tex")), "do not lose me\n");
+  EXPECT_EQ(ws.entries(), (std::set<std::string>{"sdof.toml", "mine/", "mine/thesis.tex"}));
+}
+
+TEST(SimulateCli, FileAsOutIsLeftAlone) {
+  Workspace ws;
+  ws.write("sdof.toml", project_case());
+  ws.write("notes.txt", "keep\n");
+  const RunResult r = ws.run({"simulate", "sdof.toml", "--out", "notes.txt"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "notes.txt")) << r.err;
+  EXPECT_EQ(read_text(ws.path("notes.txt")), "keep\n");
+  EXPECT_EQ(ws.entries(), (std::set<std::string>{"sdof.toml", "notes.txt"}));
+}
+
+// A failure found only while simulating (after the staging folder exists) must still leave
+// nothing: neither the staging folder nor the parent folders made for a nested --out.
+TEST(SimulateCli, LateFailureWithNestedOutLeavesNothing) {
+  Workspace ws;
+  ws.write("modal.toml", edit_case(project_case(), {{"rolling", "history", "\"modal\""}}));
+  const RunResult r = ws.run({"simulate", "modal.toml", "--out", "results/today/run1"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_EQ(ws.entries(), (std::set<std::string>{"modal.toml"}))
+      << "a failed run leaves no folders behind";
+}
+
+// `--out .` in an empty folder: either the results go there (exit 0) or a clear bad-input
+// message (exit 2); never an internal failure.
+TEST(SimulateCli, OutIsTheCurrentEmptyFolder) {
+  Workspace ws;
+  ws.write("../sdof.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "../sdof.toml", "--out", "."});
+  EXPECT_TRUE(r.status == 0 || r.status == 2) << describe(r);
+  if (r.status == 0) {
+    EXPECT_TRUE(fs::is_regular_file(ws.path("summary.json")));
+  } else {
+    EXPECT_TRUE(starts_with(r.err, "rollnoise: error: ")) << r.err;
+    EXPECT_TRUE(ws.entries().empty());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: exit status 2, one line "rollnoise: error: FILE: KEY: what is allowed", and no
+// output folder (nor a hidden partial one) afterwards.
+
+struct BadInput {
+  std::string name;
+  std::string base = "larsson2000_sdof_sine.toml";  // in models/cases; empty: `raw` is the case
+  std::vector<Edit> edits = {};
+  std::string raw = "";
+  std::vector<std::pair<std::string, std::string>> files = {};  // more files beside the case
+  std::vector<std::string> args = {};                            // after the default ones
+  bool write_case = true;
+  std::string case_name = "bad_case.toml";
+  std::vector<std::string> expect = {};  // parts of the message
+  std::vector<std::string> reject = {};  // text the message must not hold
+};
+
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.name; }
+
+const char* const kCase = "bad_case.toml";
+
+const std::vector<BadInput>& bad_inputs() {
+  static const std::vector<BadInput> inputs = {
+      {.name = "mass_negative", .edits = {{"tyre", "mass", "-1"}}, .expect = {kCase, "[tyre] mass", "> 0"}},
+      {.name = "mass_zero", .edits = {{"tyre", "mass", "0"}}, .expect = {kCase, "[tyre] mass", "> 0"}},
+      {.name = "mass_nan", .edits = {{"tyre", "mass", "nan"}}, .expect = {kCase, "[tyre] mass", "finite"}},
+      {.name = "mass_inf", .edits = {{"tyre", "mass", "inf"}}, .expect = {kCase, "[tyre] mass", "finite"}},
+      {.name = "mass_string", .edits = {{"tyre", "mass", "\"1 kg\""}}, .expect = {kCase, "[tyre] mass", "number"}},
+      {.name = "mass_missing", .edits = {{"tyre", "mass", std::nullopt}}, .expect = {kCase, "[tyre] mass", "required"}},
+      {.name = "stiffness_zero", .edits = {{"tyre", "stiffness", "0"}}, .expect = {kCase, "[tyre] stiffness", "> 0"}},
+      {.name = "damping_negative", .edits = {{"tyre", "damping", "-50"}}, .expect = {kCase, "[tyre] damping", "> 0"}},
+      {.name = "contact_stiffness_zero",
+       .edits = {{"tyre", "contact_stiffness", "0"}},
+       .expect = {kCase, "[tyre] contact_stiffness", "> 0"}},
+      {.name = "time_step_zero", .edits = {{"rolling", "time_step", "0"}}, .expect = {kCase, "[rolling] time_step", "> 0"}},
+      {.name = "time_step_negative",
+       .edits = {{"rolling", "time_step", "-1e-4"}},
+       .expect = {kCase, "[rolling] time_step", "> 0"}},
+      {.name = "time_step_longer_than_run",
+       .edits = {{"rolling", "time_step", "0.1"}},
+       .expect = {kCase, "[rolling] time_step", "duration"}},
+      // 1e35 steps: the message must give a sensible count (the cast to long long overflows).
+      {.name = "step_count_huge",
+       .edits = {{"rolling", "duration", "1e30"}, {"rolling", "time_step", "1e-5"}},
+       .expect = {kCase, "[rolling] time_step", "2e7"},
+       .reject = {"-9223372036854775808"}},
+      {.name = "speed_zero", .edits = {{"rolling", "speed", "0"}}, .expect = {kCase, "[rolling] speed", "> 0"}},
+      {.name = "static_load_negative",
+       .edits = {{"rolling", "static_load", "-1"}},
+       .expect = {kCase, "[rolling] static_load", ">= 0"}},
+      {.name = "model_unknown",
+       .edits = {{"tyre", "model", "\"bogus\""}},
+       .expect = {kCase, "[tyre] model", "bogus", "allowed", "\"sdof\""}},
+      {.name = "road_type_unknown",
+       .edits = {{"road", "type", "\"bogus\""}},
+       .expect = {kCase, "[road] type", "bogus", "allowed", "\"sine\""}},
+      {.name = "history_unknown",
+       .edits = {{"rolling", "history", "\"bogus\""}},
+       .expect = {kCase, "[rolling] history", "allowed", "\"direct\""}},
+      {.name = "history_modal_not_for_point_models",
+       .edits = {{"rolling", "history", "\"modal\""}},
+       .expect = {kCase, "[rolling] history", "modal", "allowed"}},
+      {.name = "discretisation_unknown",
+       .edits = {{"rolling", "discretisation", "\"trapezoid\""}},
+       .expect = {kCase, "[rolling] discretisation", "allowed", "\"rectangle\""}},
+      {.name = "unknown_key_in_tyre",
+       .edits = {{"tyre", "colour", "\"black\""}},
+       .expect = {kCase, "[tyre] colour", "unknown key", "allowed", "mass"}},
+      {.name = "unknown_key_in_rolling",
+       .edits = {{"rolling", "sped", "1.0"}},
+       .expect = {kCase, "[rolling] sped", "unknown key", "allowed", "speed"}},
+      {.name = "unknown_key_in_road",
+       .edits = {{"road", "phase", "0.5"}},
+       .expect = {kCase, "[road] phase", "unknown key", "allowed"}},
+      {.name = "unknown_key_in_output",
+       .edits = {{"output", "wav", "true"}},
+       .expect = {kCase, "[output] wav", "unknown key", "allowed"}},
+      {.name = "unknown_section",
+       .edits = {{"tyres", "mass", "1.0"}},
+       .expect = {kCase, "tyres", "unknown section", "allowed", "[tyre]"}},
+      {.name = "rolling_section_missing",
+       .raw = "[tyre]\nmodel = \"sdof\"\nmass = 1.0\ndamping = 50.0\nstiffness = 500.0\n"
+              "contact_stiffness = 1.0e5\n[road]\ntype = \"flat\"\n",
+       .expect = {kCase, "[rolling]", "required"}},
+      {.name = "tyre_not_a_table", .raw = "tyre = 3\n", .expect = {kCase, "tyre", "table"}},
+      {.name = "case_file_missing", .write_case = false, .case_name = "no_such_case.toml",
+       .expect = {"no_such_case.toml", "not found"}},
+      {.name = "case_file_is_a_folder", .files = {{"folder_case.toml/x", ""}}, .write_case = false,
+       .case_name = "folder_case.toml", .expect = {"folder_case.toml", "folder"}},
+      {.name = "malformed_toml",
+       .base = "",
+       .raw = "[tyre]\nmodel = \"sdof\"\nmass = 1.0 kg\n",
+       .expect = {kCase, "line 3", "malformed TOML"}},
+      {.name = "tyre_model_file_missing",
+       .edits = {{"tyre", "file", "\"no_such_model.toml\""}},
+       .expect = {"no_such_model.toml", "not found"}},
+      // A bad value in a model file named by `[tyre] file`: the message names the model file.
+      {.name = "model_file_mass_negative",
+       .edits = {{"tyre", "file", "\"bad_model.toml\""}, {"tyre", "mass", std::nullopt}},
+       .files = {{"bad_model.toml", "mass = -1.0\n"}},
+       .expect = {"bad_model.toml", "[tyre] mass", "> 0"}},
+      {.name = "model_file_unknown_key",
+       .edits = {{"tyre", "file", "\"odd_model.toml\""}},
+       .files = {{"odd_model.toml", "colour = \"black\"\n"}},
+       .expect = {"odd_model.toml", "[tyre] colour", "unknown key", "allowed"}},
+      {.name = "coupling_not_positive_definite",
+       .base = "larsson2000_coupled_sine.toml",
+       .edits = {{"tyre", "coupling", "1.5"}},
+       .expect = {kCase, "[tyre] coupling", "between -1 and 1"}},
+      {.name = "coupling_singular",
+       .base = "larsson2000_coupled_sine.toml",
+       .edits = {{"tyre", "coupling", "-1.0"}},
+       .expect = {kCase, "[tyre] coupling", "between -1 and 1"}},
+      {.name = "random_road_seed_negative",
+       .base = "larsson2000_sdof_random.toml",
+       .edits = {{"road", "seed", "-1"}},
+       .expect = {kCase, "[road] seed", "integer"}},
+      // speed x duration overflows to inf: the road cannot cover the run.
+      {.name = "road_length_overflow_random",
+       .base = "larsson2000_sdof_random.toml",
+       .edits = {{"rolling", "speed", "1e300"}, {"rolling", "duration", "1e300"}, {"rolling", "time_step", "1e296"}},
+       .expect = {kCase, "[rolling]"}},
+      {.name = "road_length_overflow_sine",
+       .edits = {{"rolling", "speed", "1e300"}, {"rolling", "duration", "1e300"}, {"rolling", "time_step", "1e296"}},
+       .expect = {kCase, "[rolling]"}},
+      {.name = "road_file_missing", .edits = file_road("missing_road.csv"), .expect = {"missing_road.csv", "not found"}},
+      {.name = "road_file_nan",
+       .edits = file_road("nan_road.csv"),
+       .files = {{"nan_road.csv", "x,z\n0,0\n0.025,nan\n0.1,0\n"}},
+       .expect = {"nan_road.csv", "line 3", "finite"}},
+      {.name = "road_file_x_not_increasing",
+       .edits = file_road("decreasing_road.csv"),
+       .files = {{"decreasing_road.csv", "x,z\n0,0\n0.05,0.001\n0.04,0\n0.1,0\n"}},
+       .expect = {"decreasing_road.csv", "data row 3", "strictly increasing"}},
+      {.name = "road_file_x_repeated",
+       .edits = file_road("repeated_road.csv"),
+       .files = {{"repeated_road.csv", "x,z\n0,0\n0.05,0.001\n0.05,0\n0.1,0\n"}},
+       .expect = {"repeated_road.csv", "data row 3", "strictly increasing"}},
+      {.name = "road_file_too_short",
+       .edits = file_road("short_road.csv"),
+       .files = {{"short_road.csv", "x,z\n0,0\n0.01,0\n"}},
+       .expect = {"short_road.csv", "0.05"}},
+      {.name = "road_file_without_z",
+       .edits = file_road("no_z_road.csv"),
+       .files = {{"no_z_road.csv", "x,height\n0,0\n0.1,0\n"}},
+       .expect = {"no_z_road.csv", "\"z\""}},
+      {.name = "road_file_not_numeric",
+       .edits = file_road("text_road.csv"),
+       .files = {{"text_road.csv", "x,z\n0,0\n0.05,high\n0.1,0\n"}},
+       .expect = {"text_road.csv", "line 3", "not a number"}},
+      {.name = "set_without_equals",
+       .args = {"--set", "rolling.static_load"},
+       .expect = {"--set", "rolling.static_load", "section.key=value"}},
+      {.name = "set_nan_mass",
+       .args = {"--set", "tyre.mass=nan"},
+       .expect = {"--set", "[tyre] mass", "finite"}},
+      {.name = "set_into_a_value",
+       .args = {"--set", "tyre.mass.kg=1"},
+       .expect = {"--set", "tyre.mass", "not a table"}},
+      {.name = "set_unknown_key",
+       .args = {"--set", "rolling.sped=2"},
+       .expect = {"[rolling] sped", "unknown key", "allowed"}},
+      // A device as model file would block (/dev/stdin) or never end (/dev/zero).
+      {.name = "model_file_is_a_device",
+       .args = {"--set", "tyre.file=/dev/null"},
+       .expect = {"/dev/null", "not a regular file"}},
+      // Each value is positive, but together they leave double range.
+      {.name = "parameters_beyond_double_range",
+       .args = {"--set", "tyre.damping=1e300"},
+       .expect = {"[tyre] mass, damping", "range"}},
+  };
+  return inputs;
+}
+
+class SimulateBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SimulateBadInput, ExitsTwoWithOneMessageAndNoOutput) {
+  const BadInput& input = GetParam();
+  Workspace ws;
+  for (const auto& [name, text] : input.files) {
+    fs::create_directories(ws.path(name).parent_path());
+    ws.write(name, text);
+  }
+  if (input.write_case) {
+    std::string text = input.raw.empty() ? project_case(input.base) : input.raw;
+    if (input.raw.empty()) text = edit_case(text, input.edits);
+    ws.write(input.case_name, text);
+  }
+  const std::set<std::string> before = ws.entries();
+
+  std::vector<std::string> args{"simulate", input.case_name, "--out", "out"};
+  args.insert(args.end(), input.args.begin(), input.args.end());
+  const RunResult r = ws.run(args);
+
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(starts_with(r.err, "rollnoise: error: ")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << "exactly one line on stderr:\n" << r.err;
+  for (const auto& part : input.expect) {
+    EXPECT_TRUE(contains(r.err, part)) << "the message lacks \"" << part << "\":\n" << r.err;
+  }
+  for (const auto& part : input.reject) {
+    EXPECT_FALSE(contains(r.err, part)) << "the message holds \"" << part << "\":\n" << r.err;
+  }
+  EXPECT_FALSE(fs::exists(ws.path("out"))) << "--out folder made by a failed run";
+  EXPECT_EQ(ws.entries(), before) << "a failed run leaves nothing behind (no partial folder)";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, SimulateBadInput, ::testing::ValuesIn(bad_inputs()),
+                         [](const ::testing::TestParamInfo<BadInput>& param_info) { return param_info.param.name; });
+
+}  // namespace
