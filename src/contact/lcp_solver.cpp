@@ -144,7 +144,13 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
   const Eigen::Index n = a_.rows();
   if (q.size() != n) throw std::invalid_argument("LCP vector has the wrong size");
   iterations_ = 0;
-  // Warm start: x = 0 is feasible for any active set; the loop keeps what still fits.
+  // Warm start: x = 0 is feasible for any active set; the loop keeps what still fits. With
+  // no previous set, the points that penetrate at x = 0 (q < 0) are the first guess, which
+  // saves one pivot per contact point against starting from nothing.
+  if (active_.empty()) {
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (q(j) < 0.0 && add_to_factor(j)) ++iterations_;
+  }
   x_.setZero();
   feasibility_loop(q);
   const double q_scale = q.cwiseAbs().maxCoeff();
@@ -152,8 +158,9 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
   const int max_changes = static_cast<int>(20 * n + 100);
   std::vector<char> blocked(static_cast<std::size_t>(n), 0);
   while (true) {
-    w_.noalias() = a_ * x_;
-    w_ += q;
+    // w = q + A·x, summed over the active columns only (x is 0 elsewhere).
+    w_ = q;
+    for (const Eigen::Index j : active_) w_.noalias() += a_.col(j) * x_(j);
     const double tolerance = 64.0 * kEps * (a_scale * x_.cwiseAbs().maxCoeff() + q_scale);
     Eigen::Index entering = -1;
     double most_negative = -tolerance;
