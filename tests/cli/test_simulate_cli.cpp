@@ -329,6 +329,20 @@ TEST(SimulateCli, SetOverridesStaticLoad) {
   EXPECT_NEAR(summary["points"][0]["static_force_N"].get<double>(), 3.0, 1e-9);
 }
 
+TEST(SimulateCli, SameCaseAndSeedGiveTheSameNumbers) {
+  // Determinism: two runs of the random-road case write byte-identical contact.csv files.
+  Workspace ws;
+  ws.write("random.toml", edit_case(project_case("larsson2000_coupled_random.toml"), {{"output", "plots", "false"}}));
+  ASSERT_EQ(ws.run({"simulate", "random.toml", "--out", "a"}).status, 0);
+  ASSERT_EQ(ws.run({"simulate", "random.toml", "--out", "b"}).status, 0);
+  const std::string a = read_text(ws.path("a") / "contact.csv");
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, read_text(ws.path("b") / "contact.csv"));
+  // Another seed gives another road.
+  ASSERT_EQ(ws.run({"simulate", "random.toml", "--out", "c", "--set", "road.seed=7"}).status, 0);
+  EXPECT_NE(a, read_text(ws.path("c") / "contact.csv"));
+}
+
 TEST(SimulateCli, RunningTwiceReplacesTheEarlierOutput) {
   Workspace ws;
   ws.write("sdof.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
