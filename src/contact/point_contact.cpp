@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <sstream>
 
 #include "contact/history_engine.hpp"
@@ -23,7 +24,7 @@ std::vector<std::string> check_time_step(const GreensModel& model, double time_s
   if (time_step * rate > 0.2) {
     std::ostringstream text;
     text << "[rolling] time_step = " << time_step << " s is coarse for the model's fastest dynamics ("
-         << rate << " rad/s, period " << 2.0 * M_PI / rate << " s); use at most " << 0.2 / rate
+         << rate << " rad/s, period " << 2.0 * std::numbers::pi / rate << " s); use at most " << 0.2 / rate
          << " s for accurate forces";
     warnings.push_back(text.str());
   }
