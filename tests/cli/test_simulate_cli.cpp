@@ -406,6 +406,8 @@ TEST(SimulateCli, ProgressIsQuietWhenStderrIsNotATerminal) {
 
 TEST(SimulateCli, ProgressIsShownOnATerminalForLongRunsOnly) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs script(1) for a terminal";
+  // Containers and chroots may have no pseudo-terminals at all.
+  if (std::system("script -qec true /dev/null >/dev/null 2>&1") != 0) GTEST_SKIP() << "no pseudo-terminal here";
   Workspace ws;
   ws.write("case.toml", edit_case(project_case(), {{"output", "plots", "false"}}));
   ws.write("long.toml",
