@@ -33,6 +33,7 @@ LcpSolver::LcpSolver(Eigen::MatrixXd matrix) : a_(std::move(matrix)) {
   work_ = Eigen::VectorXd::Zero(n);
   l_ = Eigen::MatrixXd::Zero(n, n);
   is_active_.assign(static_cast<std::size_t>(n), 0);
+  blocked_.assign(static_cast<std::size_t>(n), 0);
   active_.reserve(static_cast<std::size_t>(n));
 }
 
@@ -156,7 +157,7 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
   const double q_scale = q.cwiseAbs().maxCoeff();
   const double a_scale = a_.cwiseAbs().rowwise().sum().maxCoeff();
   const int max_changes = static_cast<int>(20 * n + 100);
-  std::vector<char> blocked(static_cast<std::size_t>(n), 0);
+  std::fill(blocked_.begin(), blocked_.end(), 0);
   while (true) {
     // w = q + A·x, summed over the active columns only (x is 0 elsewhere).
     w_ = q;
@@ -165,7 +166,7 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
     Eigen::Index entering = -1;
     double most_negative = -tolerance;
     for (Eigen::Index j = 0; j < n; ++j) {
-      if (!is_active_[j] && !blocked[j] && w_(j) < most_negative) {
+      if (!is_active_[j] && !blocked_[j] && w_(j) < most_negative) {
         most_negative = w_(j);
         entering = j;
       }
@@ -173,7 +174,7 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
     if (entering < 0) break;
     if (!add_to_factor(entering)) {
       // A_PP ∪ {j} is numerically singular (j duplicates active points): x_j = 0 is optimal.
-      blocked[entering] = 1;
+      blocked_[entering] = 1;
       continue;
     }
     ++iterations_;

@@ -52,6 +52,8 @@ class LcpSolver {
   // Active indices in factor order, their Cholesky factor (top-left p×p of l_), and scratch.
   std::vector<Eigen::Index> active_;
   std::vector<char> is_active_;
+  // Indices that would make the active matrix singular, skipped for the rest of a solve.
+  std::vector<char> blocked_;
   Eigen::MatrixXd l_;
   Eigen::VectorXd z_, rhs_, work_;
   Eigen::Index active_count_ = 0;
