@@ -85,7 +85,8 @@ void LcpSolver::remove_from_factor(Eigen::Index position) {
   l_.col(p - 1).setZero();
 }
 
-// z_P = −A_PP⁻¹ q_P from the factor, with one step of iterative refinement.
+// z_P = −A_PP⁻¹ q_P from the factor. (Round-off of the updated factor is removed once, at
+// the end of solve(), by a refinement step.)
 void LcpSolver::solve_on_active(const Eigen::Ref<const Eigen::VectorXd>& q) {
   const Eigen::Index p = static_cast<Eigen::Index>(active_.size());
   if (p == 0) return;
@@ -94,15 +95,6 @@ void LcpSolver::solve_on_active(const Eigen::Ref<const Eigen::VectorXd>& q) {
   auto z = z_.head(p);
   z = lower.solve(rhs_.head(p));
   lower.transpose().solveInPlace(z);
-  for (Eigen::Index i = 0; i < p; ++i) {
-    double r = rhs_(i);
-    for (Eigen::Index j = 0; j < p; ++j) r -= a_(active_[i], active_[j]) * z(j);
-    work_(i) = r;
-  }
-  auto dz = work_.head(p);
-  dz = lower.solve(dz.eval());
-  lower.transpose().solveInPlace(dz);
-  z += dz;
 }
 
 // From a feasible x (x ≥ 0, x = 0 off the active set), moves towards the unconstrained
@@ -158,6 +150,7 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
   const double a_scale = a_.cwiseAbs().rowwise().sum().maxCoeff();
   const int max_changes = static_cast<int>(20 * n + 100);
   std::fill(blocked_.begin(), blocked_.end(), 0);
+  bool refined = false;
   while (true) {
     // w = q + A·x, summed over the active columns only (x is 0 elsewhere).
     w_ = q;
@@ -171,7 +164,24 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
         entering = j;
       }
     }
-    if (entering < 0) break;
+    if (entering < 0) {
+      if (refined) break;
+      // One step of iterative refinement on the final active set: x_P += A_PP⁻¹·(−w_P). It
+      // removes the round-off that the row updates of the factor have gathered.
+      refined = true;
+      const Eigen::Index p = static_cast<Eigen::Index>(active_.size());
+      if (p == 0) break;
+      const auto lower = l_.topLeftCorner(p, p).triangularView<Eigen::Lower>();
+      for (Eigen::Index i = 0; i < p; ++i) work_(i) = -w_(active_[i]);
+      auto dx = work_.head(p);
+      dx = lower.solve(dx.eval());
+      lower.transpose().solveInPlace(dx);
+      bool stays_positive = true;
+      for (Eigen::Index i = 0; i < p; ++i) stays_positive = stays_positive && x_(active_[i]) + dx(i) > 0.0;
+      if (!stays_positive) break;  // at a degenerate boundary: keep the unrefined, feasible x
+      for (Eigen::Index i = 0; i < p; ++i) x_(active_[i]) += dx(i);
+      continue;  // recompute w and recheck optimality
+    }
     if (!add_to_factor(entering)) {
       // A_PP ∪ {j} is numerically singular (j duplicates active points): x_j = 0 is optimal.
       blocked_[entering] = 1;

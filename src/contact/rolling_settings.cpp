@@ -37,4 +37,27 @@ RollingSettings read_rolling_settings(const ConfigTable& rolling) {
   return s;
 }
 
+TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
+  TyreRollingSettings s;
+  s.speed = rolling.positive("speed");
+  s.duration = rolling.positive("duration");
+  s.static_load = rolling.positive("static_load");
+  s.history = parse_history_kind(rolling.choice("history", {"auto", "direct", "modal", "fft"}, "auto"));
+  s.points_circumferential = static_cast<int>(rolling.integer("points_circumferential", 512, 8, 1 << 16));
+  if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");
+  s.points_lateral = static_cast<int>(rolling.integer("points_lateral", 16, 1, 1024));
+  s.contact_window = rolling.positive("contact_window", 0.2);
+  if (rolling.contains("time_step")) {
+    rolling.fail("time_step", "is derived from the grid for a tyre (Δt = 2πR/points_circumferential/speed); remove it");
+  }
+  if (rolling.contains("discretisation") && rolling.text("discretisation") != "step") {
+    rolling.fail("discretisation", "only \"step\" is available for a tyre (its modes recur exactly on it)");
+  }
+  rolling.reject_unknown_keys();
+  if (!std::isfinite(s.speed * s.duration)) {
+    rolling.fail("duration", "speed × duration (the length of road rolled over, m) must be a finite number");
+  }
+  return s;
+}
+
 }  // namespace rollnoise

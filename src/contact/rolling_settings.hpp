@@ -22,7 +22,19 @@ struct RollingSettings {
   std::size_t steps() const;
 };
 
-// Reads and validates [rolling]; unknown keys are rejected.
+// Reads and validates [rolling] for a point model; unknown keys are rejected.
 RollingSettings read_rolling_settings(const ConfigTable& rolling);
+
+// [rolling] for a tyre: the time step follows from the grid (Δt = dx/v), so it is not a key.
+struct TyreRollingSettings {
+  double speed = 0.0;             // m/s
+  double duration = 0.0;          // s
+  double static_load = 0.0;       // W, N
+  HistoryKind history = HistoryKind::automatic;
+  int points_circumferential = 512;
+  int points_lateral = 16;
+  double contact_window = 0.2;    // m, length of the fixed window around the bottom
+};
+TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling);
 
 }  // namespace rollnoise

@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
-#include <Eigen/Cholesky>
+#include <Eigen/LU>
 
-#include "contact/lcp_solver.hpp"
+#include "contact/pmatrix_lcp.hpp"
 
 namespace rollnoise {
 
@@ -13,20 +14,19 @@ StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
                                    const Eigen::VectorXd& undeformed_gap, double load) {
   if (!(load >= 0.0)) throw std::invalid_argument("static load must be >= 0");
   const Eigen::Index n = undeformed_gap.size();
-  LcpSolver lcp(compliance);
   const double touch = undeformed_gap.minCoeff();  // below this d nothing touches
   StaticContact result{touch, Eigen::VectorXd::Zero(n)};
   if (load == 0.0) return result;
 
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(n);
   auto total_at = [&](double d) {
-    lcp.solve(undeformed_gap.array() - d);
-    return lcp.solution().sum();
+    force = solve_pmatrix_lcp(compliance, (undeformed_gap.array() - d).matrix()).z;
+    return force.sum();
   };
   // First guess: every point in contact.
-  const Eigen::LLT<Eigen::MatrixXd> llt(compliance);
-  const double all_in = llt.solve(Eigen::VectorXd::Ones(n)).sum();
+  const double all_in = compliance.partialPivLu().solve(Eigen::VectorXd::Ones(n)).sum();
   double lo = touch;
-  double hi = touch + load / all_in;
+  double hi = touch + load / std::abs(all_in);
   while (total_at(hi) < load) {
     lo = hi;
     hi = touch + 2.0 * (hi - touch);
@@ -40,24 +40,23 @@ StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
     // On the current active set ΣF is linear in d with slope 1ᵀ·C_AA⁻¹·1.
     std::vector<Eigen::Index> active;
     for (Eigen::Index i = 0; i < n; ++i)
-      if (lcp.solution()(i) > 0.0) active.push_back(i);
+      if (force(i) > 0.0) active.push_back(i);
     double next = 0.5 * (lo + hi);
     if (!active.empty()) {
       const auto m = static_cast<Eigen::Index>(active.size());
       Eigen::MatrixXd caa(m, m);
       for (Eigen::Index a = 0; a < m; ++a)
         for (Eigen::Index b = 0; b < m; ++b) caa(a, b) = compliance(active[a], active[b]);
-      const double slope = caa.llt().solve(Eigen::VectorXd::Ones(m)).sum();
+      const double slope = caa.partialPivLu().solve(Eigen::VectorXd::Ones(m)).sum();
       const double newton = d + (load - total) / slope;
-      if (newton > lo && newton < hi) next = newton;
-      else if (newton == lo || newton == hi) next = newton;
+      if (newton >= lo && newton <= hi) next = newton;
     }
     if (next == d) break;
     d = next;
   }
   total_at(d);
   result.indentation = d;
-  result.force = lcp.solution();
+  result.force = force;
   return result;
 }
 

@@ -13,7 +13,8 @@ struct StaticContact {
   Eigen::VectorXd force;     // N, per point
 };
 
-// `compliance`: the static compliance (SPD), `undeformed_gap`: h per point at d = 0 (m),
+// `compliance`: the static compliance, a P-matrix (symmetric positive definite for a body at
+// rest; non-symmetric for a rolling, damped one); `undeformed_gap`: h per point at d = 0 (m);
 // `load`: W ≥ 0 (N).
 StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
                                    const Eigen::VectorXd& undeformed_gap, double load);

@@ -154,6 +154,14 @@ std::string ConfigTable::choice(std::string_view key, const std::vector<std::str
   return choice(key, allowed);
 }
 
+std::optional<ConfigTable> ConfigTable::subtable(std::string_view key) const {
+  const toml::node* node = find(key);
+  if (!node) return std::nullopt;
+  if (!node->is_table()) fail(key, "must be a table (for example [" + section_ + "." + std::string(key) + "])");
+  const std::string path = section_.empty() ? std::string(key) : section_ + "." + std::string(key);
+  return ConfigTable(*node->as_table(), source_of(key), path, provenance_);
+}
+
 void ConfigTable::reject_unknown_keys() const {
   for (const auto& [key, node] : *table_) {
     if (known_.count(key.str()) == 0) {

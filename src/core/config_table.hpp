@@ -51,6 +51,10 @@ class ConfigTable {
   std::string choice(std::string_view key, const std::vector<std::string>& allowed,
                      std::string fallback) const;
 
+  // A nested table (TOML [section.key] or key.sub = …); std::nullopt when absent. A value that
+  // is not a table is an InputError.
+  std::optional<ConfigTable> subtable(std::string_view key) const;
+
   // Throws InputError for the first key in the table that no lookup asked for, listing the
   // keys that are allowed here.
   void reject_unknown_keys() const;

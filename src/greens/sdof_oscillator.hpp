@@ -20,8 +20,13 @@ struct SdofOscillator {
 
   // Impulse response h(t) (m/(N·s)); 0 for t < 0.
   double impulse_response(double t) const;
+  // Its rate dh/dt (m/(N·s²)), with dh/dt(0) = 1/m.
+  double impulse_response_rate(double t) const;
   // Step response ∫_0^t h (m/N); 1/k as t → ∞.
   double step_response(double t) const;
+  // ∫_{t0}^{t1} e^{iωτ} h(τ) dτ (m/N), 0 ≤ t0 ≤ t1 < ∞: the step integral seen by a load that
+  // travels with phase e^{iωτ} (a rolling tyre's mode in the fixed contact window).
+  std::complex<double> phase_integral(double omega, double t0, double t1) const;
   // Receptance 1/(k − mω² + iωr) (m/N).
   std::complex<double> receptance(double omega) const;
   // ζ = r/(2√(km)).

@@ -13,6 +13,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "road/portable_normal.hpp"
 
 namespace rollnoise {
 namespace {
@@ -41,22 +42,6 @@ struct FftwPlan {
   FftwPlan(const FftwPlan&) = delete;
   FftwPlan& operator=(const FftwPlan&) = delete;
 };
-
-// Uniform on (0, 1] from the top 53 bits, so that log() below never sees 0. Written out rather
-// than std::uniform_real_distribution / std::normal_distribution, whose algorithms the
-// standard leaves to the implementation: the same seed must give the same road everywhere.
-double uniform_open_closed(std::mt19937_64& engine) {
-  return (static_cast<double>(engine() >> 11) + 1.0) * 0x1.0p-53;
-}
-
-// Box-Muller: two independent standard normals from two uniforms.
-std::pair<double, double> standard_normal_pair(std::mt19937_64& engine) {
-  const double u1 = uniform_open_closed(engine);
-  const double u2 = static_cast<double>(engine() >> 11) * 0x1.0p-53;  // [0, 1)
-  const double radius = std::sqrt(-2.0 * std::log(u1));
-  const double angle = 2.0 * std::numbers::pi * u2;
-  return {radius * std::cos(angle), radius * std::sin(angle)};
-}
 
 // Smallest n' >= n of the form 2^a 3^b 5^c, sizes for which FFTW is fast.
 std::size_t fft_friendly_size(std::size_t n) {
@@ -162,7 +147,7 @@ RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
   const double band_low = 1.0 / longest;
   const double band_high = 1.0 / shortest;
   for (std::size_t m = 1; 2 * m < n; ++m) {
-    const auto [re, im] = standard_normal_pair(engine);
+    const auto [re, im] = portable::standard_normal_pair(engine);
     const double wavenumber = static_cast<double>(m) / length;
     double amplitude = 0.0;
     if (gaussian) {

@@ -16,6 +16,7 @@
 #include "road/random_road.hpp"
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
+#include "road/cleat_road.hpp"
 
 namespace rollnoise {
 namespace {
@@ -31,6 +32,14 @@ std::unique_ptr<RoadProfile> build_named(const ConfigTable& road, Build build) {
     if (!e.source().empty() || e.key().empty()) throw;
     road.fail(e.key(), e.problem());
   }
+}
+
+std::unique_ptr<RoadProfile> make_cleat(const ConfigTable& road) {
+  const double height = road.number("height");
+  const double length = road.positive("length");
+  const double position = road.non_negative("position", 1.0);
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return std::make_unique<CleatRoad>(height, length, position); });
 }
 
 std::unique_ptr<RoadProfile> make_sine(const ConfigTable& road) {
@@ -95,12 +104,13 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_profile: the x range must be numbers");
   }
-  const std::string type = road.choice("type", {"flat", "sine", "random", "file"});
+  const std::string type = road.choice("type", {"flat", "sine", "random", "file", "cleat"});
   if (type == "flat") {
     road.reject_unknown_keys();
     return std::make_unique<FlatRoad>();
   }
   if (type == "sine") return make_sine(road);
+  if (type == "cleat") return make_cleat(road);
   if (type == "random") return make_random(road, x_max);
   return make_file(road, x_min, x_max);
 }

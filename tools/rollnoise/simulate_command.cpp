@@ -18,6 +18,7 @@
 #include "greens/model_factory.hpp"
 #include "point_contact_output.hpp"
 #include "road/road_profile.hpp"
+#include "tyre_simulation.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -46,6 +47,14 @@ int run_simulate(const SimulateOptions& options) {
   const CaseFile file = CaseFile::load(options.case_file, options.overrides);
   file.reject_unknown_sections({"tyre", "road", "rolling", "output"});
   try {
+    fs::path out = options.out;
+    if (out.empty()) {
+      const std::string directory = file.optional_section("output").text("directory", "");
+      out = !directory.empty() ? fs::path(directory) : fs::path("out") / fs::path(file.path()).stem();
+    }
+    if (file.section("tyre").choice("model", {"sdof", "coupled_sdof", "plate"}) == "plate") {
+      return run_tyre_simulation(file, out, started);
+    }
     const ConfigTable tyre = file.section("tyre");
     const ConfigTable road_table = file.section("road");
     const ConfigTable rolling = file.section("rolling");
@@ -53,7 +62,7 @@ int run_simulate(const SimulateOptions& options) {
 
     const std::unique_ptr<GreensModel> model = make_greens_model(tyre);
     const RollingSettings settings = read_rolling_settings(rolling);
-    const std::string directory = output.text("directory", "");
+    output.text("directory", "");
     const bool plots = output.boolean("plots", true);
     output.reject_unknown_keys();
 
@@ -62,8 +71,6 @@ int run_simulate(const SimulateOptions& options) {
     const std::unique_ptr<RoadProfile> road =
         make_road_profile(road_table, -trail, settings.speed * settings.duration);
 
-    fs::path out = options.out;
-    if (out.empty()) out = !directory.empty() ? fs::path(directory) : fs::path("out") / fs::path(file.path()).stem();
     StagedOutputDirectory staged(out);
 
     for (const auto& warning : check_time_step(*model, settings.time_step)) {

@@ -1,0 +1,41 @@
+#pragma once
+// The per-step contact problem with nonlinear contact springs for small-scale roughness
+// (Andersson & Kropp 2008; MODEL.md §4): each contact point p has a local spring
+// F_p = k_p·δ_p^n (δ_p ≥ 0 its compression) in series with the linear structure, whose
+// instantaneous compliance is A = G_s[0] (structural part only; symmetric positive
+// semi-definite). With the known part q = h − d + u⁰ − r the gap is
+//   gap(δ) = q + A·(k ∘ δⁿ) + δ
+// and the problem is the nonlinear complementarity problem δ ≥ 0, gap ≥ 0, δ·gap = 0 (F > 0
+// exactly where δ > 0). Written in δ rather than F the Jacobian I + A·diag(n k δ^{n−1}) is smooth
+// and nonsingular for n ≥ 1, so the Fischer–Burmeister reformulation φ(δ_p, gap_p) = 0 is solved
+// by SUNDIALS KINSOL (Newton with line search, dense Jacobian). For n = 1 the problem is the
+// linear LCP with compliance A + diag(1/k).
+#include <memory>
+
+#include <Eigen/Core>
+
+namespace rollnoise {
+
+class NonlinearSpringContact {
+ public:
+  // structural: A (P × P, symmetric PSD); stiffness: k_p > 0 (N/m^n); exponent: n ≥ 1.
+  NonlinearSpringContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent);
+  ~NonlinearSpringContact();
+  NonlinearSpringContact(const NonlinearSpringContact&) = delete;
+  NonlinearSpringContact& operator=(const NonlinearSpringContact&) = delete;
+
+  // Solves for q (m), warm-started from the previous solution. Returns the forces F (N).
+  // Throws std::runtime_error if KINSOL fails to converge.
+  const Eigen::VectorXd& solve(const Eigen::Ref<const Eigen::VectorXd>& q);
+
+  const Eigen::VectorXd& force() const noexcept;        // F = k ∘ δⁿ
+  const Eigen::VectorXd& compression() const noexcept;  // δ
+  const Eigen::VectorXd& gap() const noexcept;          // gap(δ) ≥ 0
+  int iterations() const noexcept;                      // Newton iterations of the last solve
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rollnoise

@@ -1,0 +1,115 @@
+#include "contact/rolling_plate.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/LU>
+
+namespace rollnoise {
+
+RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step)
+    : plate_(plate),
+      grid_(grid),
+      time_step_(time_step),
+      orders_(plate.parameters().circumferential_modes),
+      lateral_modes_(plate.parameters().lateral_modes),
+      modal_mass_(plate.modal_mass()) {
+  grid_.validate();
+  if (std::abs(plate.circumference() - grid_.circumference()) > 1e-12 * grid_.circumference())
+    throw std::invalid_argument("the plate and the grid have different radii");
+  if (orders_ > grid_.circumferential / 2) {
+    throw std::invalid_argument("circumferential_modes = " + std::to_string(orders_) +
+                                " exceeds what points_circumferential = " +
+                                std::to_string(grid_.circumferential) + " can represent (at most " +
+                                std::to_string(grid_.circumferential / 2) + ")");
+  }
+  lateral_shapes_.resize(grid_.lateral, lateral_modes_);
+  for (int j = 0; j < grid_.lateral; ++j)
+    for (int n = 1; n <= lateral_modes_; ++n)
+      lateral_shapes_(j, n - 1) = std::sin(plate.wavenumber_y(n) * grid_.y(j));
+  const double zeta = plate.damping_ratio();
+  for (int n = 1; n <= lateral_modes_; ++n) {
+    for (int m = 0; m <= orders_; ++m) {
+      const double w = plate.natural_frequency(m, n);
+      // Unit modal mass: the 1/M of the mode normalisation is applied in the projections.
+      oscillators_.push_back(SdofOscillator{1.0, 2.0 * zeta * w, w * w});
+      recursions_.push_back(make_travelling_recursion(oscillators_.back(), time_step_, passing_rate(m)));
+    }
+  }
+}
+
+double RollingPlate::passing_rate(int m) const {
+  // k_m·v with v = dx/Δt: order m turns by 2πm/Nθ per step.
+  return 2.0 * std::numbers::pi * m / (grid_.circumferential * time_step_);
+}
+
+void RollingPlate::add_modal_sum(const std::vector<std::complex<double>>& coefficients,
+                                 Eigen::MatrixXd& out) const {
+  const int nw = grid_.window;
+  const int ny = grid_.lateral;
+  const int big_n = grid_.circumferential;
+  // a_n(Δ) for Δ = i_p − i_q from −(Nw−1) to Nw−1.
+  Eigen::MatrixXd a(2 * nw - 1, lateral_modes_);
+  for (int d = -(nw - 1); d <= nw - 1; ++d) {
+    for (int n = 1; n <= lateral_modes_; ++n) {
+      double sum = 0.0;
+      for (int m = 0; m <= orders_; ++m) {
+        // e^{2πi m Δ/Nθ}, with the angle reduced exactly in integers.
+        const long turns = (static_cast<long>(m) * d) % big_n;
+        const std::complex<double> e = std::polar(1.0, 2.0 * std::numbers::pi * static_cast<double>(turns) / big_n);
+        sum += weight(m) * (e * coefficients[static_cast<std::size_t>(mode_index(m, n))]).real();
+      }
+      a(d + nw - 1, n - 1) = sum / modal_mass_;
+    }
+  }
+  // Block (j_p, j_q) of lateral shapes for each Δ.
+  const Eigen::MatrixXd& s = lateral_shapes_;
+  for (int d = -(nw - 1); d <= nw - 1; ++d) {
+    const Eigen::MatrixXd block = s * a.row(d + nw - 1).asDiagonal() * s.transpose();  // Ny × Ny
+    for (int ip = std::max(0, d); ip < nw && ip - d < nw; ++ip) {
+      const int iq = ip - d;
+      for (int jp = 0; jp < ny; ++jp)
+        for (int jq = 0; jq < ny; ++jq) out(ip + nw * jp, iq + nw * jq) += block(jp, jq);
+    }
+  }
+}
+
+DiscreteKernel RollingPlate::sheared_kernel(std::size_t lags) const {
+  DiscreteKernel kernel;
+  kernel.time_step = time_step_;
+  kernel.discretisation = Discretisation::step;
+  const Eigen::Index p = grid_.points();
+  const double dt = time_step_;
+  std::vector<std::complex<double>> coefficients(oscillators_.size());
+  for (std::size_t k = 0; k < lags; ++k) {
+    // H̃_mn[k] = ∫_{kΔt}^{(k+1)Δt} e^{iω_m τ} h_mn(τ) dτ in closed form.
+    const double t0 = static_cast<double>(k) * dt;
+    for (int n = 1; n <= lateral_modes_; ++n)
+      for (int m = 0; m <= orders_; ++m) {
+        const auto r = static_cast<std::size_t>(mode_index(m, n));
+        coefficients[r] = oscillators_[r].phase_integral(passing_rate(m), t0, t0 + dt);
+      }
+    Eigen::MatrixXd lag = Eigen::MatrixXd::Zero(p, p);
+    add_modal_sum(coefficients, lag);
+    kernel.lags.push_back(std::move(lag));
+  }
+  kernel.total = rolling_compliance();
+  return kernel;
+}
+
+Eigen::MatrixXd RollingPlate::rolling_compliance() const {
+  // Σ_k H̃[k] = ∫_0^∞ e^{iωτ} h dτ = α(−ω), the receptance with the e^{−iωt} convention.
+  std::vector<std::complex<double>> coefficients(oscillators_.size());
+  for (int n = 1; n <= lateral_modes_; ++n)
+    for (int m = 0; m <= orders_; ++m) {
+      const auto r = static_cast<std::size_t>(mode_index(m, n));
+      coefficients[r] = oscillators_[r].receptance(-passing_rate(m));
+    }
+  Eigen::MatrixXd total = Eigen::MatrixXd::Zero(grid_.points(), grid_.points());
+  add_modal_sum(coefficients, total);
+  return total;
+}
+
+}  // namespace rollnoise

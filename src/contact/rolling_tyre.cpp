@@ -1,0 +1,170 @@
+#include "contact/rolling_tyre.hpp"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "contact/direct_history_engine.hpp"
+#include "contact/lcp_solver.hpp"
+#include "contact/modal_history_engine.hpp"
+#include "contact/static_contact.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "road/road_profile.hpp"
+
+namespace rollnoise {
+namespace {
+
+// Work of the contact forces on the tyre's deformation u (not its rigid geometry), per metre
+// rolled. Material moves one cell towards −x per step: the material at window column i now was
+// at column i + 1 a step before. Over that step a force doing work ∫F du is taken by the
+// trapezoidal rule, ½(F_now + F_before)(u_now − u_before), which makes the elastic (lossless)
+// parts add up to exactly zero. Points at the front edge have no neighbour ahead; their force is
+// zero when the window is long enough (a warning says when it is not).
+double power_per_metre(const TyreGrid& grid, const Eigen::VectorXd& force_now, const Eigen::VectorXd& u_now,
+                       const Eigen::VectorXd& force_before, const Eigen::VectorXd& u_before) {
+  double sum = 0.0;
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 0; i + 1 < grid.window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+      sum += 0.5 * (force_now(p) + force_before(p + 1)) * (u_now(p) - u_before(p + 1));
+    }
+  return sum / grid.dx();
+}
+
+}  // namespace
+
+SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+                                   double load) {
+  const TyreGrid& grid = plate.grid();
+  const Eigen::MatrixXd compliance = local_compliance + plate.rolling_compliance();
+  const Eigen::VectorXd h = grid.undeformed_gap();
+  const StaticContact contact = solve_static_contact(compliance, h, load);
+  SteadyRolling steady;
+  steady.indentation = contact.indentation;
+  steady.force = contact.force;
+  steady.deformation = compliance * contact.force;
+  const Eigen::VectorXd& deformation = steady.deformation;
+  steady.displacement = (h.array() - contact.indentation).matrix() + deformation;
+  // In steady rolling the material at point p came from point p + 1 one step before, in the
+  // same steady shape.
+  steady.rolling_resistance = power_per_metre(grid, steady.force, deformation, steady.force, deformation);
+  return steady;
+}
+
+TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+                                       const RoadProfile& road, const TyreRunSettings& settings,
+                                       ProgressReporter* progress) {
+  const TyreGrid& grid = plate.grid();
+  const Eigen::Index points = grid.points();
+  const double dt = plate.time_step();
+  if (std::abs(dt * settings.speed - grid.dx()) > 1e-9 * grid.dx())
+    throw std::invalid_argument("rolling tyre: the time step must be dx/v");
+  const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
+  const std::size_t samples = steps + 1;
+
+  const SteadyRolling steady = solve_steady_rolling(plate, local_compliance, settings.static_load);
+
+  std::unique_ptr<HistoryEngine> engine;
+  std::shared_ptr<const DiscreteKernel> kernel;
+  Eigen::MatrixXd g0;
+  if (settings.history == HistoryKind::direct) {
+    auto dense = std::make_shared<DiscreteKernel>(plate.sheared_kernel(samples));
+    dense->lags[0] += local_compliance;
+    dense->total += local_compliance;
+    kernel = dense;
+    g0 = kernel->lags[0];
+    engine = std::make_unique<DirectHistoryEngine>(kernel, samples, steady.force);
+  } else if (settings.history == HistoryKind::modal || settings.history == HistoryKind::automatic) {
+    g0 = plate.sheared_kernel(1).lags[0] + local_compliance;
+    engine = std::make_unique<ModalHistoryEngine>(plate, steady.force);
+  } else {
+    throw InputError("", "[rolling] history",
+                     "engine \"" + to_string(settings.history) +
+                         "\" is not available for the plate model; allowed: \"auto\", \"modal\", \"direct\"");
+  }
+  // G0 is slightly non-symmetric: within one step the material moves by a cell. Its symmetric
+  // part S is taken at the current step, so each step is an exact symmetric LCP; its skew part
+  // K (a fraction of a per cent) acts through the previous step's force. A steady state is
+  // unchanged by this (F(n) = F(n−1)), and the added error is first order in Δt, like the step
+  // discretisation itself. Both history engines see the same split.
+  const Eigen::MatrixXd g0_symmetric = 0.5 * (g0 + g0.transpose());
+  const Eigen::MatrixXd g0_skew = g0 - g0_symmetric;
+  LcpSolver lcp(g0_symmetric);
+
+  TyreContactTrace trace;
+  trace.engine = engine->name();
+  trace.indentation = steady.indentation;
+  trace.steady_force = steady.force;
+  trace.steady_displacement = steady.displacement;
+  trace.steady_rolling_resistance = steady.rolling_resistance;
+  const auto rows = static_cast<Eigen::Index>(samples);
+  trace.time.resize(rows);
+  trace.force.resize(rows, points);
+  trace.displacement.resize(rows, points);
+  trace.road.resize(rows, points);
+  trace.total_force.resize(rows);
+  trace.contact_area.resize(rows);
+  trace.contact_length.resize(rows);
+  trace.contact_width.resize(rows);
+  trace.input_power.resize(rows);
+  trace.lcp_iterations.resize(samples);
+  trace.contact_matrix_skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
+
+  const Eigen::VectorXd h = grid.undeformed_gap();
+  Eigen::VectorXd u0(points), r(points), q(points), position(points), deformation(points);
+  Eigen::VectorXd previous_force = steady.force;
+  Eigen::VectorXd previous_deformation = steady.deformation;
+  const double cell_area = grid.dx() * grid.dy();
+  bool edge_warned = false;
+  for (std::size_t n = 0; n < samples; ++n) {
+    const double t = static_cast<double>(n) * dt;
+    for (int j = 0; j < grid.lateral; ++j)
+      for (int i = 0; i < grid.window; ++i)
+        r(i + static_cast<Eigen::Index>(grid.window) * j) = road.height(grid.x(i) + settings.speed * t);
+    engine->history(u0);
+    u0.noalias() += g0_skew * previous_force;
+    q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
+    const Eigen::VectorXd& force = lcp.solve(q);
+    deformation.noalias() = g0_symmetric * force;
+    deformation += u0;
+    position = h + deformation;
+    position.array() -= steady.indentation;
+
+    const auto row = static_cast<Eigen::Index>(n);
+    trace.time(row) = t;
+    trace.force.row(row) = force.transpose();
+    trace.displacement.row(row) = position.transpose();
+    trace.road.row(row) = r.transpose();
+    trace.total_force(row) = force.sum();
+    int in_contact = 0, i_min = grid.window, i_max = -1, j_min = grid.lateral, j_max = -1;
+    for (int j = 0; j < grid.lateral; ++j)
+      for (int i = 0; i < grid.window; ++i)
+        if (force(i + static_cast<Eigen::Index>(grid.window) * j) > 0.0) {
+          ++in_contact;
+          i_min = std::min(i_min, i);
+          i_max = std::max(i_max, i);
+          j_min = std::min(j_min, j);
+          j_max = std::max(j_max, j);
+        }
+    trace.contact_area(row) = in_contact * cell_area;
+    trace.contact_length(row) = in_contact ? (i_max - i_min + 1) * grid.dx() : 0.0;
+    trace.contact_width(row) = in_contact ? (j_max - j_min + 1) * grid.dy() : 0.0;
+    if (!edge_warned && in_contact && (i_min == 0 || i_max == grid.window - 1)) {
+      trace.warnings.push_back("the contact reaches the edge of the contact window at t = " + std::to_string(t) +
+                               " s: lengthen [rolling] contact_window");
+      edge_warned = true;
+    }
+    trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, previous_force,
+                                                              previous_deformation);
+    previous_force = force;
+    previous_deformation = deformation;
+    trace.lcp_iterations[n] = lcp.iterations();
+    engine->advance(force);
+    if (progress) progress->update(n);
+  }
+  if (progress) progress->finish();
+  return trace;
+}
+
+}  // namespace rollnoise

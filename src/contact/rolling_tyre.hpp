@@ -1,0 +1,66 @@
+#pragma once
+// The rolling tyre (MODEL.md §4): a Kropp plate with a local tread compliance, rolling at
+// constant speed over a road, one exact contact problem per step over the fixed contact window.
+//
+// The axle height is fixed by steady rolling on a smooth road: the steady force F_s solves the
+// LCP with the compliance summed over all lags (non-symmetric when damped), and the
+// indentation d is the one for which ΣF_s = W. The run starts from that steady state (its
+// pre-history is part of u⁰), so a smooth road keeps F_s exactly and outputs have no start-up
+// transient.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "contact/history_engine.hpp"
+#include "contact/rolling_plate.hpp"
+
+namespace rollnoise {
+
+class RoadProfile;
+class ProgressReporter;
+
+struct TyreRunSettings {
+  double speed = 0.0;        // v, m/s (Δt = dx/v)
+  double duration = 0.0;     // s
+  double static_load = 0.0;  // W, N
+  HistoryKind history = HistoryKind::automatic;
+};
+
+struct TyreContactTrace {
+  Eigen::VectorXd time;            // s
+  Eigen::MatrixXd force;           // N, samples × P (p = i + Nw·j)
+  Eigen::MatrixXd displacement;    // vertical position of the tread surface, road datum, m
+  Eigen::MatrixXd road;            // m
+  Eigen::VectorXd total_force;     // N
+  Eigen::VectorXd contact_area;    // m²
+  Eigen::VectorXd contact_length;  // m, extent along x of the points in contact
+  Eigen::VectorXd contact_width;   // m, extent across
+  Eigen::VectorXd input_power;     // W, power of the contact forces into the tyre, Σ F·u̇
+  std::vector<int> lcp_iterations;  // active-set changes per step
+  // Largest entry of the skew part of G0 over the largest of G0 (taken one step late).
+  double contact_matrix_skewness = 0.0;
+  double indentation = 0.0;        // d, m
+  Eigen::VectorXd steady_force;    // F_s, N
+  Eigen::VectorXd steady_displacement;  // tread surface position in steady rolling, m
+  double steady_rolling_resistance = 0.0;  // N, from F_s and the steady deformation
+  std::string engine;
+  std::vector<std::string> warnings;
+};
+
+// The steady rolling state on a smooth road under load W: indentation and forces.
+struct SteadyRolling {
+  double indentation = 0.0;
+  Eigen::VectorXd force;
+  Eigen::VectorXd deformation;   // tyre surface displacement u (structure + tread), m
+  Eigen::VectorXd displacement;  // tread surface position h − d + u, m
+  double rolling_resistance = 0.0;  // N: the work of the contact forces on u per metre rolled
+};
+SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+                                   double load);
+
+TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+                                       const RoadProfile& road, const TyreRunSettings& settings,
+                                       ProgressReporter* progress = nullptr);
+
+}  // namespace rollnoise

@@ -1,0 +1,56 @@
+#include "contact/tyre_grid.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rollnoise {
+
+double TyreGrid::circumference() const { return 2.0 * std::numbers::pi * radius; }
+double TyreGrid::dx() const { return circumference() / circumferential; }
+double TyreGrid::dy() const { return width / lateral; }
+double TyreGrid::x(int i) const { return (i - window / 2) * dx(); }
+double TyreGrid::y(int j) const { return (j + 0.5) * dy(); }
+
+int TyreGrid::grid_index(int i) const {
+  const int g = (i - window / 2) % circumferential;
+  return g < 0 ? g + circumferential : g;
+}
+
+Eigen::MatrixX2d TyreGrid::positions() const {
+  Eigen::MatrixX2d xy(points(), 2);
+  for (int j = 0; j < lateral; ++j)
+    for (int i = 0; i < window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(window) * j;
+      xy(p, 0) = x(i);
+      xy(p, 1) = y(j);
+    }
+  return xy;
+}
+
+Eigen::VectorXd TyreGrid::undeformed_gap() const {
+  Eigen::VectorXd h(points());
+  for (int j = 0; j < lateral; ++j)
+    for (int i = 0; i < window; ++i) {
+      const double xi = x(i);
+      const double around = radius - std::sqrt(radius * radius - xi * xi);
+      const double yc = y(j) - 0.5 * width;
+      const double across = crown_radius > 0.0 ? yc * yc / (2.0 * crown_radius) : 0.0;
+      h(i + static_cast<Eigen::Index>(window) * j) = around + across;
+    }
+  return h;
+}
+
+void TyreGrid::validate() const {
+  if (!(radius > 0.0) || !(width > 0.0)) throw std::invalid_argument("tyre radius and width must be > 0");
+  if (circumferential < 8 || circumferential % 2 != 0)
+    throw std::invalid_argument("points_circumferential must be an even number >= 8");
+  if (lateral < 1) throw std::invalid_argument("points_lateral must be >= 1");
+  if (window < 2 || window > circumferential / 2)
+    throw std::invalid_argument("contact_window must be from 2 to half of points_circumferential");
+  if (std::abs(x(window - 1)) >= radius || std::abs(x(0)) >= radius)
+    throw std::invalid_argument("contact window longer than the tyre diameter");
+  if (crown_radius < 0.0) throw std::invalid_argument("crown_radius must be >= 0");
+}
+
+}  // namespace rollnoise

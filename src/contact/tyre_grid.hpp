@@ -1,0 +1,34 @@
+#pragma once
+// The tyre surface grid and the fixed contact window (MODEL.md §4). The belt is a grid of
+// Nθ points around (spacing dx = 2πR/Nθ) by Ny points across (cell centres y_j = (j + ½)·b/Ny).
+// Rolling advances the tyre one cell per step, Δt = dx/v. The contact window is Nw fixed
+// positions x_i = (i − Nw/2)·dx around the bottom (x along the direction of travel, 0 under
+// the axle), by all Ny lateral points. Contact point p = i + Nw·j.
+#include <Eigen/Core>
+
+namespace rollnoise {
+
+struct TyreGrid {
+  double radius = 0.0;            // R, m
+  double width = 0.0;             // b, m
+  int circumferential = 512;      // Nθ
+  int lateral = 16;               // Ny
+  int window = 48;                // Nw
+  double crown_radius = 0.0;      // m; 0 = flat across the width
+
+  double circumference() const;
+  double dx() const;                      // 2πR/Nθ
+  double dy() const;                      // b/Ny
+  Eigen::Index points() const { return static_cast<Eigen::Index>(window) * lateral; }
+  double x(int i) const;                  // fixed position of window column i
+  double y(int j) const;                  // lateral position of row j, in [0, b]
+  int grid_index(int i) const;            // material grid index under window column i at step 0
+  Eigen::MatrixX2d positions() const;     // (x, y) of every contact point
+  // Undeformed height of each contact point above the lowest point of the tyre (m):
+  // R − √(R² − x²) around, plus (y − b/2)²/(2·crown_radius) across.
+  Eigen::VectorXd undeformed_gap() const;
+  // Throws std::invalid_argument if the sizes are not usable.
+  void validate() const;
+};
+
+}  // namespace rollnoise

@@ -1,0 +1,31 @@
+#pragma once
+// Reads the `plate` tyre model and its tread from a [tyre] table (or a model file's top level).
+#include <string>
+
+#include "greens/kropp_plate.hpp"
+
+namespace rollnoise {
+
+class ConfigTable;
+
+// The local compliance of the tread ([tyre.tread], MODEL.md §4).
+struct TreadSettings {
+  enum class Type { winkler, halfspace, nonlinear };
+  Type type = Type::winkler;
+  double stiffness_per_area = 0.0;  // winkler: N/m³
+  double youngs_modulus = 0.0;      // halfspace: Pa
+  double poisson_ratio = 0.0;       // halfspace
+  double spring_stiffness = 0.0;    // nonlinear: N/m^exponent per m² of cell (k_p = this·dx·dy)
+  double spring_exponent = 1.0;     // nonlinear: n ≥ 1
+};
+
+struct PlateTyre {
+  PlateParameters plate;
+  TreadSettings tread;
+  double crown_radius = 0.0;  // m; 0 = flat across
+};
+
+// Reads model = "plate"; unknown keys are rejected.
+PlateTyre read_plate_tyre(const ConfigTable& tyre);
+
+}  // namespace rollnoise

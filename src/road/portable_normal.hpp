@@ -1,0 +1,27 @@
+#pragma once
+// Portable standard normal numbers from std::mt19937_64, shared by the random roads and
+// surfaces. Written out rather than std::uniform_real_distribution / std::normal_distribution,
+// whose algorithms the standard leaves to the implementation: the same seed must give the same
+// road on every platform and standard library.
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <utility>
+
+namespace rollnoise::portable {
+
+// Uniform on (0, 1] from the top 53 bits, so that log() never sees 0.
+inline double uniform_open_closed(std::mt19937_64& engine) {
+  return (static_cast<double>(engine() >> 11) + 1.0) * 0x1.0p-53;
+}
+
+// Box-Muller: two independent standard normals from two uniforms (two engine draws).
+inline std::pair<double, double> standard_normal_pair(std::mt19937_64& engine) {
+  const double u1 = uniform_open_closed(engine);
+  const double u2 = static_cast<double>(engine() >> 11) * 0x1.0p-53;  // [0, 1)
+  const double radius = std::sqrt(-2.0 * std::log(u1));
+  const double angle = 2.0 * std::numbers::pi * u2;
+  return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+}  // namespace rollnoise::portable

@@ -1,0 +1,53 @@
+#pragma once
+// A road surface r(x, y) (m, upward; MODEL.md §1, §4, §7): x along the road (direction of
+// travel), y across it, y = 0 on the wheel's centre line. A rolling tyre samples it at
+// (x_i + v t, y_j) for each lateral line y_j of its contact grid.
+//
+// Convention shared with the 1-D profiles (road_profile.hpp): r = 0 for x < 0, the flat lead-in
+// on which the static load's pre-history rolled.
+#include <memory>
+#include <string>
+
+#include "road/road_profile.hpp"
+
+namespace rollnoise {
+
+class ConfigTable;
+
+class RoadSurface {
+ public:
+  virtual ~RoadSurface() = default;
+  // "flat", "sine", "random", "file", "cleat" (a 1-D profile on every line), "random_surface",
+  // "surface" (a height-map file).
+  virtual std::string type() const = 0;
+  // Height (m) at x along the road and y across it. r = 0 for x < 0. Generated and read
+  // surfaces cover the range they were built for; outside it (x >= 0) they throw
+  // std::logic_error.
+  virtual double height(double x, double y) const = 0;
+};
+
+// A 1-D profile used on every lateral line: r(x, y) = r(x).
+class ProfileSurface final : public RoadSurface {
+ public:
+  // `profile` must not be null (std::invalid_argument).
+  explicit ProfileSurface(std::unique_ptr<RoadProfile> profile);
+
+  std::string type() const override;
+  double height(double x, double y) const override;
+
+  const RoadProfile& profile() const noexcept { return *profile_; }
+
+ private:
+  std::unique_ptr<RoadProfile> profile_;
+};
+
+// Builds the surface of a [road] table. The 1-D types (flat, sine, random, file, cleat) give the
+// same profile on every lateral line (a ProfileSurface around make_road_profile, with the same
+// keys and defaults). The 2-D types are "random_surface" (random_surface.hpp) and "surface" (a
+// height-map file, height_map_surface.hpp). The run looks at x in [x_min, x_max] and y in
+// [-half_width, half_width] (half_width >= 0). Unknown keys are rejected; every bad value is an
+// InputError naming "[road] key" in the file that set it, or the data file.
+std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,
+                                               double half_width);
+
+}  // namespace rollnoise

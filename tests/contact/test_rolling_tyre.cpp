@@ -1,0 +1,125 @@
+// The rolling plate: the modal engine against the direct one (the exact sheared kernel from
+// the modes' analytic step integrals), and the steady rolling state it starts from.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "contact/rolling_tyre.hpp"
+#include "greens/tread_compliance.hpp"
+#include "road/road_profile.hpp"
+
+namespace rollnoise {
+namespace {
+
+// A small belt, so that the direct engine's dense kernel stays small: 64 points around,
+// 4 across, a 16-cell window.
+PlateParameters small_plate(double loss_factor) {
+  PlateParameters p;
+  p.radius = 0.3;
+  p.width = 0.16;
+  p.mass_per_area = 10.0;
+  p.tension_x = 8e4;
+  p.tension_y = 4e4;
+  p.bending_x = 6.0;
+  p.bending_y = 3.0;
+  p.bending_xy = 3.0;
+  p.foundation_stiffness = 2.8e6;
+  p.loss_factor = loss_factor;
+  p.circumferential_modes = 32;
+  p.lateral_modes = 4;
+  return p;
+}
+
+TyreGrid small_grid() {
+  TyreGrid g;
+  g.radius = 0.3;
+  g.width = 0.16;
+  g.circumferential = 64;
+  g.lateral = 4;
+  g.window = 16;
+  return g;
+}
+
+class Bumps : public RoadProfile {
+ public:
+  std::string type() const override { return "bumps"; }
+  double height(double x) const override {
+    if (x < 0.0) return 0.0;
+    return 1.5e-3 * std::sin(2 * M_PI * x / 0.09) * std::sin(2 * M_PI * x / 0.31);
+  }
+};
+
+class Flat : public RoadProfile {
+ public:
+  std::string type() const override { return "flat"; }
+  double height(double) const override { return 0.0; }
+};
+
+Eigen::MatrixXd tread(const TyreGrid& g) { return winkler_compliance(g.points(), g.dx(), g.dy(), 4e8); }
+
+TEST(RollingTyre, ModalEngineEqualsDirect) {
+  const KroppPlate plate(small_plate(0.15));
+  const TyreGrid grid = small_grid();
+  const double speed = 20.0;
+  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  TyreRunSettings settings{speed, 60 * grid.dx() / speed, 1500.0, HistoryKind::direct};
+  const Bumps road;
+  const TyreContactTrace direct = simulate_rolling_tyre(rolling, tread(grid), road, settings);
+  settings.history = HistoryKind::modal;
+  const TyreContactTrace modal = simulate_rolling_tyre(rolling, tread(grid), road, settings);
+  ASSERT_EQ(direct.force.rows(), 61);
+  EXPECT_EQ(modal.engine, "modal");
+  EXPECT_EQ(direct.engine, "direct");
+  // The case loses and regains contact: the active set changes.
+  EXPECT_LT(direct.contact_area.minCoeff(), direct.contact_area.maxCoeff());
+  const double force_scale = direct.force.cwiseAbs().maxCoeff();
+  const double displacement_scale = direct.displacement.cwiseAbs().maxCoeff();
+  EXPECT_LE((modal.force - direct.force).cwiseAbs().maxCoeff(), 1e-9 * force_scale);
+  EXPECT_LE((modal.displacement - direct.displacement).cwiseAbs().maxCoeff(), 1e-9 * displacement_scale);
+}
+
+TEST(RollingTyre, SmoothRoadKeepsTheSteadyState) {
+  const KroppPlate plate(small_plate(0.15));
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const double load = 3200.0;
+  const TyreContactTrace t =
+      simulate_rolling_tyre(rolling, tread(grid), Flat(), {speed, 100 * grid.dx() / speed, load, HistoryKind::modal});
+  EXPECT_LE((t.total_force.array() - load).abs().maxCoeff(), 1e-9 * load);
+  for (Eigen::Index n = 0; n < t.force.rows(); ++n) {
+    EXPECT_LE((t.force.row(n).transpose() - t.steady_force).cwiseAbs().maxCoeff(), 1e-9 * load) << "step " << n;
+  }
+  EXPECT_TRUE(t.warnings.empty());
+}
+
+TEST(RollingTyre, DampingMakesThePressureLeanForwardAndCostsRollingResistance) {
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const double load = 3200.0;
+  const auto steady = [&](double loss_factor) {
+    const KroppPlate plate(small_plate(loss_factor));
+    return solve_steady_rolling(RollingPlate(plate, grid, grid.dx() / speed), tread(grid), load);
+  };
+  const SteadyRolling with_loss = steady(0.15);
+  const SteadyRolling without = steady(0.0);
+  EXPECT_NEAR(with_loss.force.sum(), load, 1e-12 * load);
+  EXPECT_NEAR(without.force.sum(), load, 1e-12 * load);
+  // Pressure centroid along x: forward (towards +x, the leading edge) with damping, where the
+  // material entering the patch resists compression; exactly central without.
+  const Eigen::MatrixX2d xy = grid.positions();
+  const double centroid_damped = with_loss.force.dot(xy.col(0)) / load;
+  const double centroid_lossless = without.force.dot(xy.col(0)) / load;
+  EXPECT_GT(centroid_damped, 1e-5);  // m; far above the round-off bound below
+  EXPECT_LE(std::abs(centroid_lossless), 1e-12);
+  EXPECT_GT(with_loss.rolling_resistance, 0.0);
+  // Without loss the contact forces do no net work: zero up to round-off of the sums.
+  EXPECT_LE(std::abs(without.rolling_resistance), 1e-12 * load);
+  // For light damping the dissipated power is proportional to η (first order in the damping).
+  const double ratio = steady(0.02).rolling_resistance / steady(0.01).rolling_resistance;
+  EXPECT_NEAR(ratio, 2.0, 0.05);
+  RecordProperty("rolling_resistance_N", std::to_string(with_loss.rolling_resistance));
+}
+
+}  // namespace
+}  // namespace rollnoise

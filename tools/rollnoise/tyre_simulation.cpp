@@ -1,0 +1,188 @@
+#include "tyre_simulation.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/rolling_settings.hpp"
+#include "contact/rolling_tyre.hpp"
+#include "core/case_file.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/gnuplot.hpp"
+#include "core/output_directory.hpp"
+#include "core/progress.hpp"
+#include "greens/plate_factory.hpp"
+#include "greens/tread_compliance.hpp"
+#include "road/road_profile.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+namespace {
+
+Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& grid, const ConfigTable& tyre) {
+  switch (tread.type) {
+    case TreadSettings::Type::winkler:
+      return winkler_compliance(grid.points(), grid.dx(), grid.dy(), tread.stiffness_per_area);
+    case TreadSettings::Type::halfspace:
+      return halfspace_compliance(grid.positions(), grid.dx(), grid.dy(), tread.youngs_modulus, tread.poisson_ratio);
+    case TreadSettings::Type::nonlinear:
+      break;
+  }
+  throw InputError(tyre.source_of("tread"), "[tyre.tread] type",
+                   "\"nonlinear\" is not yet available for a rolling tyre; allowed: \"winkler\", \"halfspace\"");
+}
+
+void write_totals_csv(const fs::path& path, const TyreContactTrace& t) {
+  std::ofstream out(path, std::ios::binary);
+  CsvWriter csv(out, {"time", "total_force", "contact_area", "contact_length"});
+  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
+    const double row[] = {t.time(n), t.total_force(n), t.contact_area(n), t.contact_length(n)};
+    csv.row(row, 4);
+  }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// The pressure over the window at one step: x, y, pressure (Pa), for a gnuplot image.
+void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, const TyreGrid& grid, Eigen::Index step) {
+  std::ofstream out(path, std::ios::binary);
+  CsvWriter csv(out, {"x", "y", "pressure"});
+  const double area = grid.dx() * grid.dy();
+  for (int j = 0; j < grid.lateral; ++j) {
+    for (int i = 0; i < grid.window; ++i) {
+      const double row[] = {grid.x(i), grid.y(j), t.force(step, i + static_cast<Eigen::Index>(grid.window) * j) / area};
+      csv.row(row, 3);
+    }
+    out << '\n';  // blank line between scan lines, as gnuplot's image style expects
+  }
+}
+
+void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of_snapshot) {
+  std::ostringstream force;
+  force << "# Drawn by rollnoise from contact.csv; run `gnuplot total_force.gp` to redraw.\n"
+        << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
+        << "set output 'total_force.png'\nset datafile separator ','\nset grid\n"
+        << "set title \"" << title << ": total contact force\"\n"
+        << "set xlabel 'time (s)'\nset ylabel 'total force (N)'\nset y2label 'contact area (cm²)'\n"
+        << "set ytics nomirror\nset y2tics\n"
+        << "plot 'contact.csv' using 1:2 with lines lw 1.5 title 'total force', \\\n"
+        << "     '' using 1:($3*1e4) axes x1y2 with lines lw 1 lc rgb '#2ca02c' title 'contact area'\n";
+  write_plot(dir, "total_force", force.str());
+  std::ostringstream map;
+  map << "# Drawn by rollnoise from pressure_snapshot.csv; run `gnuplot pressure_map.gp` to redraw.\n"
+      << "set terminal pngcairo size 900,600 noenhanced font 'DejaVu Sans,10'\n"
+      << "set output 'pressure_map.png'\nset datafile separator ','\n"
+      << "set title \"" << title << ": contact pressure at t = " << time_of_snapshot
+      << " s (x along the direction of travel)\"\n"
+      << "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset cblabel 'pressure (kPa)'\nset size ratio -1\n"
+      << "set palette defined (0 'white', 1 '#fde725', 2 '#21918c', 3 '#440154')\n"
+      << "plot 'pressure_snapshot.csv' using ($1*1e3):($2*1e3):($3*1e-3) with image notitle\n";
+  write_plot(dir, "pressure_map", map.str());
+}
+
+}  // namespace
+
+int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::steady_clock::time_point started) {
+  const ConfigTable tyre = file.section("tyre");
+  const ConfigTable road_table = file.section("road");
+  const ConfigTable rolling = file.section("rolling");
+  const ConfigTable output = file.optional_section("output");
+
+  const PlateTyre model = read_plate_tyre(tyre);
+  const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
+  const bool plots = output.boolean("plots", true);
+  output.text("directory", "");
+  output.reject_unknown_keys();
+
+  TyreGrid grid;
+  grid.radius = model.plate.radius;
+  grid.width = model.plate.width;
+  grid.circumferential = settings.points_circumferential;
+  grid.lateral = settings.points_lateral;
+  grid.crown_radius = model.crown_radius;
+  grid.window = std::max(2, static_cast<int>(std::lround(settings.contact_window / grid.dx())));
+  try {
+    grid.validate();
+  } catch (const std::invalid_argument& error) {
+    throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
+  }
+  const KroppPlate plate(model.plate);
+  const double dt = grid.dx() / settings.speed;
+  std::unique_ptr<RollingPlate> rolling_plate;
+  try {
+    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
+  }
+  const Eigen::MatrixXd local = tread_compliance(model.tread, grid, tyre);
+  const double travel = settings.speed * settings.duration;
+  const std::unique_ptr<RoadProfile> road = make_road_profile(road_table, grid.x(0), grid.x(grid.window - 1) + travel);
+
+  StagedOutputDirectory staged(out);
+  const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
+  ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
+  const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history};
+  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_plate, local, *road, run, &progress);
+  for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
+
+  write_totals_csv(staged.staging() / "contact.csv", trace);
+  // The snapshot at the largest total force: the most telling instant on a rough road.
+  Eigen::Index snapshot = 0;
+  trace.total_force.maxCoeff(&snapshot);
+  write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
+  if (plots) plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
+
+  const double mean_power = trace.input_power.mean();
+  long lcp_total = 0;
+  int lcp_max = 0;
+  for (int v : trace.lcp_iterations) {
+    lcp_total += v;
+    lcp_max = std::max(lcp_max, v);
+  }
+  nlohmann::json summary;
+  summary["case"] = file.name();
+  summary["model"] = "plate";
+  summary["tread"] = model.tread.type == TreadSettings::Type::winkler ? "winkler" : "halfspace";
+  summary["road"] = road->type();
+  summary["mean_total_force_N"] = trace.total_force.mean();
+  summary["max_total_force_N"] = trace.total_force.maxCoeff();
+  summary["min_total_force_N"] = trace.total_force.minCoeff();
+  summary["mean_contact_area_m2"] = trace.contact_area.mean();
+  summary["patch_length_m"] = trace.contact_length.mean();
+  summary["patch_width_m"] = trace.contact_width.mean();
+  summary["rolling_resistance_N"] = mean_power / settings.speed;
+  summary["steady_rolling_resistance_N"] = trace.steady_rolling_resistance;
+  summary["indentation_m"] = trace.indentation;
+  summary["history_engine"] = trace.engine;
+  summary["lcp_iterations"] = {{"total", lcp_total},
+                               {"max_per_step", lcp_max},
+                               {"mean_per_step", static_cast<double>(lcp_total) / static_cast<double>(trace.lcp_iterations.size())}};
+  summary["contact_matrix_skewness"] = trace.contact_matrix_skewness;
+  summary["grid"] = {{"points_circumferential", grid.circumferential},
+                     {"points_lateral", grid.lateral},
+                     {"contact_window_points", grid.window},
+                     {"dx_m", grid.dx()},
+                     {"dy_m", grid.dy()},
+                     {"contact_points", grid.points()}};
+  summary["settings"] = {{"speed_m_per_s", settings.speed},
+                         {"duration_s", settings.duration},
+                         {"time_step_s", dt},
+                         {"steps", steps},
+                         {"static_load_N", settings.static_load},
+                         {"history", to_string(settings.history)}};
+  summary["warnings"] = trace.warnings;
+  summary["rollnoise_version"] = ROLLNOISE_VERSION;
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
+  staged.commit();
+  std::printf("rollnoise: wrote %s (contact.csv, summary.json%s)\n", out.string().c_str(),
+              plots ? ", total_force.png, pressure_map.png" : "");
+  return 0;
+}
+
+}  // namespace rollnoise
