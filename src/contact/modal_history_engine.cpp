@@ -3,21 +3,13 @@
 #include <fftw3.h>
 
 #include <cstring>
-#include <mutex>
 #include <stdexcept>
 
 #include <Eigen/LU>
 
+#include "core/fftw_planner_lock.hpp"
+
 namespace rollnoise {
-namespace {
-
-// FFTW's planner is not thread-safe; plans may be made from several threads (studies).
-std::mutex& planner_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-}  // namespace
 
 // N transforms of length Nθ, real field ↔ Nθ/2 + 1 circumferential orders.
 struct ModalHistoryEngine::Fft {
@@ -33,7 +25,7 @@ struct ModalHistoryEngine::Fft {
     field = fftw_alloc_real(static_cast<std::size_t>(n) * howmany);
     spectrum = fftw_alloc_complex(static_cast<std::size_t>(bins) * howmany);
     if (!field || !spectrum) throw std::bad_alloc();
-    const std::lock_guard lock(planner_mutex());
+    const std::lock_guard lock(fftw_planner_mutex());
     forward = fftw_plan_many_dft_r2c(1, &n, howmany, field, nullptr, 1, n, spectrum, nullptr, 1, bins,
                                      FFTW_ESTIMATE);
     backward = fftw_plan_many_dft_c2r(1, &n, howmany, spectrum, nullptr, 1, bins, field, nullptr, 1, n,
@@ -41,7 +33,7 @@ struct ModalHistoryEngine::Fft {
     if (!forward || !backward) throw std::runtime_error("FFTW could not plan the modal transforms");
   }
   ~Fft() {
-    const std::lock_guard lock(planner_mutex());
+    const std::lock_guard lock(fftw_planner_mutex());
     if (forward) fftw_destroy_plan(forward);
     if (backward) fftw_destroy_plan(backward);
     fftw_free(field);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -42,7 +41,7 @@
 // P-matrix (I + A·D is one for A PSD and D ≥ 0, and a positive column scaling keeps that), and
 // α, β ≥ 0 with α + β > 0, so this Jacobian is nonsingular everywhere: Newton is well defined.
 // After KINSOL a Newton polish in δ on the contact set (gap = 0 where in contact, δ = 0
-// elsewhere) takes the solution to round-off, and is kept only if it lowers the complementarity
+// elsewhere) takes the solution to round-off; it is kept unless it raises the complementarity
 // residual max_p |φ(δ_p/s, gap_p/s)|.
 
 namespace rollnoise {
@@ -60,6 +59,10 @@ constexpr double kStepTol = 1e-15;
 // exceeds kFuncTol·s. The acceptance level is kNoiseFactor times that round-off.
 constexpr double kNoiseFactor = 16.0;
 constexpr long kMaxIterations = 100;
+// KINSOL caps a Newton step at 1000·‖x₀‖ by default, but the solution can lie far from O(1) in
+// x (stiff springs on a rank-deficient A: large F whose A·F cancels), and the cap then ends runs
+// with KIN_MXNEWT_5X_EXCEEDED. The line search is the safeguard instead.
+constexpr double kMaxNewtonStep = 1e10;
 constexpr int kMaxPolishSteps = 6;
 
 struct ContextDeleter {
@@ -238,6 +241,7 @@ NonlinearSpringContact::Impl::Impl(Eigen::MatrixXd structural, Eigen::VectorXd s
   // more iterations than the O(P³) factorisation it saves.
   check(KINSetMaxSetupCalls(mem, 1), "KINSetMaxSetupCalls");
   check(KINSetNumMaxIters(mem, kMaxIterations), "KINSetNumMaxIters");
+  check(KINSetMaxNewtonStep(mem, kMaxNewtonStep), "KINSetMaxNewtonStep");
 }
 
 double NonlinearSpringContact::Impl::compression_of(double y, Eigen::Index p) const {
@@ -376,6 +380,7 @@ int NonlinearSpringContact::Impl::run_kinsol() {
   polish(candidate);
   if (flag == KIN_SUCCESS || flag == KIN_INITIAL_GUESS_OK) return flag;
   // Not converged by KINSOL's test: accept only at the round-off level of the problem.
+  // (Judged with δ clipped at 0, as it will be reported.)
   work_delta = candidate.cwiseMax(0.0);
   evaluate_delta();
   const double accept = std::max(kFuncTol, kNoiseFactor * gap_noise() / scale);
@@ -383,10 +388,14 @@ int NonlinearSpringContact::Impl::run_kinsol() {
 }
 
 void NonlinearSpringContact::Impl::polish(Eigen::VectorXd& point) {
-  work_delta = point;
+  // Both candidates are judged as they would be reported, with δ clipped at 0: for stiff springs
+  // clipping a δ_p of −1e-15·s moves the other gaps by A·k·δ_p, far more than 1e-15·s.
+  work_delta = point.cwiseMax(0.0);
   evaluate_delta();
   const double merit_before = merit(work_delta);
   // The contact set of the KINSOL solution: in contact where δ > gap (a > b in φ).
+  work_delta = point;
+  evaluate_delta();
   for (Eigen::Index p = 0; p < size; ++p) in_contact[p] = work_delta(p) > work_gap(p) ? 1 : 0;
   polished = point;
   for (Eigen::Index p = 0; p < size; ++p)
@@ -423,7 +432,7 @@ void NonlinearSpringContact::Impl::polish(Eigen::VectorXd& point) {
     polished = work_delta;
     residual_now = residual_next;
   }
-  work_delta = polished;
+  work_delta = polished.cwiseMax(0.0);
   evaluate_delta();
   if (merit(work_delta) <= merit_before) point = polished;
 }

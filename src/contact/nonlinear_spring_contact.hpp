@@ -6,10 +6,11 @@
 // semi-definite). With the known part q = h − d + u⁰ − r the gap is
 //   gap(δ) = q + A·(k ∘ δⁿ) + δ
 // and the problem is the nonlinear complementarity problem δ ≥ 0, gap ≥ 0, δ·gap = 0 (F > 0
-// exactly where δ > 0). Written in δ rather than F the Jacobian I + A·diag(n k δ^{n−1}) is smooth
-// and nonsingular for n ≥ 1, so the Fischer–Burmeister reformulation φ(δ_p, gap_p) = 0 is solved
-// by SUNDIALS KINSOL (Newton with line search, dense Jacobian). For n = 1 the problem is the
-// linear LCP with compliance A + diag(1/k).
+// exactly where δ > 0). KINSOL (Newton with line search, dense Jacobian) solves its
+// Fischer–Burmeister reformulation φ(y_p/s, gap_p/s) = 0 in the rescaled compression
+// y_p = δ_p + A_pp·F_p(δ_p), which has the sign of δ_p and keeps Newton well conditioned from soft
+// to very stiff springs (in δ itself it stalls when the springs are much stiffer than the
+// structure); s = ‖q‖∞. For n = 1 the problem is the linear LCP with compliance A + diag(1/k).
 #include <memory>
 
 #include <Eigen/Core>

@@ -10,7 +10,7 @@
 #include "contact/static_contact.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
-#include "road/road_profile.hpp"
+#include "road/road_surface.hpp"
 
 namespace rollnoise {
 namespace {
@@ -53,7 +53,7 @@ SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::Matri
 }
 
 TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
-                                       const RoadProfile& road, const TyreRunSettings& settings,
+                                       const RoadSurface& road, const TyreRunSettings& settings,
                                        ProgressReporter* progress) {
   const TyreGrid& grid = plate.grid();
   const Eigen::Index points = grid.points();
@@ -121,7 +121,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     const double t = static_cast<double>(n) * dt;
     for (int j = 0; j < grid.lateral; ++j)
       for (int i = 0; i < grid.window; ++i)
-        r(i + static_cast<Eigen::Index>(grid.window) * j) = road.height(grid.x(i) + settings.speed * t);
+        r(i + static_cast<Eigen::Index>(grid.window) * j) =
+            road.height(grid.x(i) + settings.speed * t, grid.y(j) - 0.5 * grid.width);
     engine->history(u0);
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;

@@ -17,7 +17,7 @@
 
 namespace rollnoise {
 
-class RoadProfile;
+class RoadSurface;
 class ProgressReporter;
 
 struct TyreRunSettings {
@@ -60,7 +60,7 @@ SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::Matri
                                    double load);
 
 TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
-                                       const RoadProfile& road, const TyreRunSettings& settings,
+                                       const RoadSurface& road, const TyreRunSettings& settings,
                                        ProgressReporter* progress = nullptr);
 
 }  // namespace rollnoise

@@ -8,9 +8,10 @@ namespace rollnoise {
 
 double TyreGrid::circumference() const { return 2.0 * std::numbers::pi * radius; }
 double TyreGrid::dx() const { return circumference() / circumferential; }
-double TyreGrid::dy() const { return width / lateral; }
+double TyreGrid::contact_width() const { return tread_width > 0.0 ? tread_width : width; }
+double TyreGrid::dy() const { return contact_width() / lateral; }
 double TyreGrid::x(int i) const { return (i - window / 2) * dx(); }
-double TyreGrid::y(int j) const { return (j + 0.5) * dy(); }
+double TyreGrid::y(int j) const { return 0.5 * (width - contact_width()) + (j + 0.5) * dy(); }
 
 int TyreGrid::grid_index(int i) const {
   const int g = (i - window / 2) % circumferential;
@@ -51,6 +52,8 @@ void TyreGrid::validate() const {
   if (std::abs(x(window - 1)) >= radius || std::abs(x(0)) >= radius)
     throw std::invalid_argument("contact window longer than the tyre diameter");
   if (crown_radius < 0.0) throw std::invalid_argument("crown_radius must be >= 0");
+  if (tread_width < 0.0 || tread_width > width)
+    throw std::invalid_argument("tread_width must lie between 0 and the belt width");
 }
 
 }  // namespace rollnoise

@@ -1,6 +1,7 @@
 #pragma once
 // The tyre surface grid and the fixed contact window (MODEL.md §4). The belt is a grid of
-// Nθ points around (spacing dx = 2πR/Nθ) by Ny points across (cell centres y_j = (j + ½)·b/Ny).
+// Nθ points around (spacing dx = 2πR/Nθ) by Ny points across the tread, which is centred on the
+// belt: cell centres y_j = (b − b_t)/2 + (j + ½)·b_t/Ny for a tread width b_t ≤ b.
 // Rolling advances the tyre one cell per step, Δt = dx/v. The contact window is Nw fixed
 // positions x_i = (i − Nw/2)·dx around the bottom (x along the direction of travel, 0 under
 // the axle), by all Ny lateral points. Contact point p = i + Nw·j.
@@ -10,7 +11,8 @@ namespace rollnoise {
 
 struct TyreGrid {
   double radius = 0.0;            // R, m
-  double width = 0.0;             // b, m
+  double width = 0.0;             // b, m (the belt: the plate's width)
+  double tread_width = 0.0;       // b_t, m; 0 = the whole belt width
   int circumferential = 512;      // Nθ
   int lateral = 16;               // Ny
   int window = 48;                // Nw
@@ -18,7 +20,8 @@ struct TyreGrid {
 
   double circumference() const;
   double dx() const;                      // 2πR/Nθ
-  double dy() const;                      // b/Ny
+  double dy() const;                      // b_t/Ny
+  double contact_width() const;           // b_t
   Eigen::Index points() const { return static_cast<Eigen::Index>(window) * lateral; }
   double x(int i) const;                  // fixed position of window column i
   double y(int j) const;                  // lateral position of row j, in [0, b]

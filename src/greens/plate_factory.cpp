@@ -53,6 +53,8 @@ PlateTyre read_plate_tyre(const ConfigTable& tyre) {
   if (!tyre.contains("circumferential_modes")) tyre.fail("circumferential_modes", "is required (an integer >= 0)");
   if (!tyre.contains("lateral_modes")) tyre.fail("lateral_modes", "is required (an integer >= 1)");
   result.crown_radius = tyre.non_negative("crown_radius", 0.0);
+  result.tread_width = tyre.positive("tread_width", p.width);
+  if (result.tread_width > p.width) tyre.fail("tread_width", "must not exceed the belt width (" + std::to_string(p.width) + " m)");
   result.tread = read_tread(tyre);
   tyre.reject_unknown_keys();
   try {

@@ -23,6 +23,7 @@ struct PlateTyre {
   PlateParameters plate;
   TreadSettings tread;
   double crown_radius = 0.0;  // m; 0 = flat across
+  double tread_width = 0.0;   // m, the width in contact with the road, centred on the belt; 0 = width
 };
 
 // Reads model = "plate"; unknown keys are rejected.

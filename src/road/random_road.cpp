@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -14,15 +13,10 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
+#include "core/fftw_planner_lock.hpp"
 
 namespace rollnoise {
 namespace {
-
-// The FFTW planner is not thread-safe; roads may be built from several threads.
-std::mutex& fftw_planner_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
 
 struct FftwFree {
   void operator()(void* p) const noexcept { fftw_free(p); }

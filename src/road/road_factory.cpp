@@ -1,4 +1,5 @@
-// make_road_profile: reads a [road] table and builds the profile it describes.
+// make_road_profile: reads a [road] table and builds the profile it describes (1-D types only;
+// the 2-D surfaces are built by make_road_surface, road_surface.cpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -103,6 +104,18 @@ std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, do
 std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max) {
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_profile: the x range must be numbers");
+  }
+  // The 2-D surfaces (road_surface.hpp) vary across the road: only a tyre model with lateral
+  // lines can roll over them. Named here so that a point model gets a message that says so
+  // rather than an unknown type.
+  if (road.contains("type")) {
+    const std::string asked = road.text("type");
+    if (asked == "random_surface" || asked == "surface") {
+      road.fail("type", "\"" + asked +
+                            "\" is a 2-D road surface r(x, y): it needs a tyre model, which rolls "
+                            "lateral lines over the road; point models (sdof, coupled_sdof) take a "
+                            "1-D profile: \"flat\", \"sine\", \"random\", \"file\" or \"cleat\"");
+    }
   }
   const std::string type = road.choice("type", {"flat", "sine", "random", "file", "cleat"});
   if (type == "flat") {

@@ -600,13 +600,12 @@ TEST(KroppPlate, PassengerCarModelFile) {
   const PlateTyre read = read_plate_tyre(CaseFile::load_model(path).top());
   EXPECT_EQ(read.plate.foundation_stiffness, p.foundation_stiffness);
   EXPECT_EQ(read.plate.lateral_modes, p.lateral_modes);
-  // The tread: a half-space of tread rubber.
-  EXPECT_EQ(t["tread"]["type"].value<std::string>(), "halfspace");
-  EXPECT_EQ(read.tread.type, TreadSettings::Type::halfspace);
-  EXPECT_GT(read.tread.youngs_modulus, 1e6);
-  EXPECT_LT(read.tread.youngs_modulus, 1e7);
-  EXPECT_GT(read.tread.poisson_ratio, 0.4);
-  EXPECT_LT(read.tread.poisson_ratio, 0.5);
+  // The tread: Winkler springs of a thin layer, k = E/t with E = 2–5 MPa and t ≈ 6–10 mm.
+  EXPECT_EQ(t["tread"]["type"].value<std::string>(), "winkler");
+  EXPECT_EQ(read.tread.type, TreadSettings::Type::winkler);
+  EXPECT_GT(read.tread.stiffness_per_area, 2e6 / 0.010);
+  EXPECT_LT(read.tread.stiffness_per_area, 5e6 / 0.006);
+  EXPECT_LE(read.tread_width, read.plate.width);
 
   // 205/55 R16: R = 0.2032 + 0.55·0.205 ≈ 0.316 m.
   EXPECT_NEAR(p.radius, 0.4064 / 2 + 0.55 * 0.205, 0.005);

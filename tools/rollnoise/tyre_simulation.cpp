@@ -18,7 +18,9 @@
 #include "core/progress.hpp"
 #include "greens/plate_factory.hpp"
 #include "greens/tread_compliance.hpp"
-#include "road/road_profile.hpp"
+#include "road/road_surface.hpp"
+#include "core/hdf5_writer.hpp"
+#include "response/surface_response.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -62,6 +64,119 @@ void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, co
   }
 }
 
+// contact.h5: the contact fields over the window and the belt's surface response, with units
+// and the grid as attributes. Returns the radial displacement of one material point (mid-width)
+// over one revolution, starting at the top of the tyre (empty if the run is shorter).
+std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingPlate& plate,
+                                 double speed, double load) {
+  const TyreGrid& grid = plate.grid();
+  Hdf5Writer h5(path);
+  h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
+  h5.attribute("/", "speed_m_per_s", speed);
+  h5.attribute("/", "static_load_N", load);
+  h5.attribute("/", "time_step_s", plate.time_step());
+  h5.attribute("/", "radius_m", grid.radius);
+  h5.attribute("/", "belt_width_m", grid.width);
+  h5.write("/time", t.time, "s", "time of each sample; t = 0 is the start of the run in steady rolling");
+  std::vector<double> x(static_cast<std::size_t>(grid.window)), y(static_cast<std::size_t>(grid.lateral));
+  for (int i = 0; i < grid.window; ++i) x[static_cast<std::size_t>(i)] = grid.x(i);
+  for (int j = 0; j < grid.lateral; ++j) y[static_cast<std::size_t>(j)] = grid.y(j);
+  const std::string layout =
+      "[sample][p] with p = i + Nw*j: reshape to [sample][Ny][Nw] (C order); x[i] along the direction of "
+      "travel from the axle, y[j] across the belt";
+  h5.write("/contact/force", t.force, "N", "contact force on each window point; " + layout);
+  h5.write("/contact/displacement", t.displacement, "m",
+           "vertical position of the tread surface, in the road's datum; " + layout);
+  h5.write("/contact/road", t.road, "m", "road height under each window point; " + layout);
+  for (const char* name : {"/contact/force", "/contact/displacement", "/contact/road"}) {
+    h5.attribute(name, "x_m", x);
+    h5.attribute(name, "y_m", y);
+  }
+
+  // The belt surface: Nθ positions around (fixed in space, from the bottom in the direction of
+  // travel) by Ny across the whole belt.
+  const int around = grid.circumferential;
+  const int across = grid.lateral;
+  const auto samples = static_cast<std::size_t>(t.time.size());
+  auto displacement = h5.slices("/surface/displacement", samples, static_cast<std::size_t>(across),
+                                static_cast<std::size_t>(around), "m",
+                                "radial displacement of the belt (outward positive towards the road at the bottom) "
+                                "[sample][y][position around]");
+  auto velocity = h5.slices("/surface/velocity", samples, static_cast<std::size_t>(across),
+                            static_cast<std::size_t>(around), "m/s",
+                            "radial velocity of the belt material at each position [sample][y][position around]");
+  SurfaceResponse response(plate, t.steady_force, across);
+  std::vector<double> angle(static_cast<std::size_t>(around)), lateral(static_cast<std::size_t>(across));
+  for (int g = 0; g < around; ++g) angle[static_cast<std::size_t>(g)] = g * grid.dx();
+  for (int j = 0; j < across; ++j) lateral[static_cast<std::size_t>(j)] = response.lateral_position(j);
+  for (const char* name : {"/surface/displacement", "/surface/velocity"}) {
+    h5.attribute(name, "arc_position_m", angle);
+    h5.attribute(name, "y_m", lateral);
+  }
+  Eigen::MatrixXd u(across, around), v(across, around);
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> slice(across, around);
+  std::vector<double> revolution;
+  for (std::size_t n = 0; n < samples; ++n) {
+    response.step(t.force.row(static_cast<Eigen::Index>(n)).transpose(), u, v);
+    slice = u.cast<float>();
+    displacement->append(slice.data());
+    slice = v.cast<float>();
+    velocity->append(slice.data());
+    // Material that starts at the top (g = Nθ/2) moves one cell towards −x per step.
+    if (n < static_cast<std::size_t>(around)) {
+      const int g = ((around / 2 - static_cast<int>(n)) % around + around) % around;
+      revolution.push_back(u(across / 2, g));
+    }
+  }
+  if (revolution.size() < static_cast<std::size_t>(around)) revolution.clear();
+  return revolution;
+}
+
+// The paper's Fig. 5a: the belt's Green's function along the circumference for an impulse at
+// the centre of the belt, at a few times after it.
+void write_greens_circumference(const fs::path& dir, const KroppPlate& plate, int points) {
+  const double b = plate.parameters().width;
+  const double length = plate.circumference();
+  const std::vector<double> times{0.25e-3, 0.5e-3, 1e-3, 2e-3};
+  std::ofstream out(dir / "greens_circumference.csv", std::ios::binary);
+  CsvWriter csv(out, {"x", "g_0.25ms", "g_0.5ms", "g_1ms", "g_2ms"});
+  for (int i = 0; i <= points; ++i) {
+    const double x = -0.5 * length + length * i / points;
+    double row[5] = {x, 0, 0, 0, 0};
+    for (std::size_t k = 0; k < times.size(); ++k) row[k + 1] = plate.green(x, 0.5 * b, 0.5 * b, times[k]);
+    csv.row(row, 5);
+  }
+  std::ostringstream gp;
+  gp << "# The belt's Green's function along the circumference (cf. Larsson 2000, Fig. 5a).\n"
+     << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'greens_circumference.png'\nset datafile separator ','\nset grid\nset key top right\n"
+     << "set title 'Green function of the belt along the circumference, unit impulse at x = 0 (mid-width)'\n"
+     << "set xlabel 'position around the tyre, x (m)'\nset ylabel 'g (mm/(N s))'\n"
+     << "plot for [c=2:5] 'greens_circumference.csv' using 1:(column(c)*1e3) with lines lw 1.5 "
+        "title columnheader(c)\n";
+  write_plot(dir, "greens_circumference", gp.str());
+}
+
+// The paper's Fig. 5b: the radial displacement of one material point over one revolution.
+void write_revolution(const fs::path& dir, const std::vector<double>& revolution, double dt) {
+  std::ofstream out(dir / "revolution.csv", std::ios::binary);
+  CsvWriter csv(out, {"angle_deg", "time", "displacement"});
+  const auto n = revolution.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double row[] = {360.0 * static_cast<double>(k) / static_cast<double>(n), static_cast<double>(k) * dt,
+                          revolution[k]};
+    csv.row(row, 3);
+  }
+  std::ostringstream gp;
+  gp << "# Radial displacement of a belt point over one revolution (cf. Larsson 2000, Fig. 5b).\n"
+     << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'revolution.png'\nset datafile separator ','\nset grid\n"
+     << "set title 'Radial displacement of one belt point (mid-width) over one revolution; contact at 180 deg'\n"
+     << "set xlabel 'angle turned from the top (deg)'\nset ylabel 'displacement (mm)'\nset xrange [0:360]\n"
+     << "plot 'revolution.csv' skip 1 using 1:($3*1e3) with lines lw 1.5 notitle\n";
+  write_plot(dir, "revolution", gp.str());
+}
+
 void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of_snapshot) {
   std::ostringstream force;
   force << "# Drawn by rollnoise from contact.csv; run `gnuplot total_force.gp` to redraw.\n"
@@ -81,7 +196,7 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
       << " s (x along the direction of travel)\"\n"
       << "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset cblabel 'pressure (kPa)'\nset size ratio -1\n"
       << "set palette defined (0 'white', 1 '#fde725', 2 '#21918c', 3 '#440154')\n"
-      << "plot 'pressure_snapshot.csv' using ($1*1e3):($2*1e3):($3*1e-3) with image notitle\n";
+      << "plot 'pressure_snapshot.csv' skip 1 using ($1*1e3):($2*1e3):($3*1e-3) with image notitle\n";
   write_plot(dir, "pressure_map", map.str());
 }
 
@@ -105,6 +220,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   grid.circumferential = settings.points_circumferential;
   grid.lateral = settings.points_lateral;
   grid.crown_radius = model.crown_radius;
+  grid.tread_width = model.tread_width;
   grid.window = std::max(2, static_cast<int>(std::lround(settings.contact_window / grid.dx())));
   try {
     grid.validate();
@@ -121,7 +237,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   }
   const Eigen::MatrixXd local = tread_compliance(model.tread, grid, tyre);
   const double travel = settings.speed * settings.duration;
-  const std::unique_ptr<RoadProfile> road = make_road_profile(road_table, grid.x(0), grid.x(grid.window - 1) + travel);
+  // Road y is measured from the wheel's centre line.
+  const std::unique_ptr<RoadSurface> road =
+      make_road_surface(road_table, grid.x(0), grid.x(grid.window - 1) + travel, 0.5 * grid.contact_width());
 
   StagedOutputDirectory staged(out);
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
@@ -135,7 +253,13 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   Eigen::Index snapshot = 0;
   trace.total_force.maxCoeff(&snapshot);
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
-  if (plots) plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
+  const std::vector<double> revolution =
+      write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load);
+  if (plots) {
+    plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
+    write_greens_circumference(staged.staging(), plate, grid.circumferential);
+    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt);
+  }
 
   const double mean_power = trace.input_power.mean();
   long lcp_total = 0;
@@ -180,8 +304,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
-  std::printf("rollnoise: wrote %s (contact.csv, summary.json%s)\n", out.string().c_str(),
-              plots ? ", total_force.png, pressure_map.png" : "");
+  std::printf("rollnoise: wrote %s (contact.csv, contact.h5, summary.json%s)\n", out.string().c_str(),
+              plots ? " and plots" : "");
   return 0;
 }
 

@@ -1,0 +1,166 @@
+#include "core/hdf5_writer.hpp"
+
+#include <hdf5.h>
+
+#include <stdexcept>
+
+namespace rollnoise {
+namespace {
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+}
+
+hid_t checked(hid_t id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5: " + what + " failed");
+  return id;
+}
+
+// Closes an HDF5 identifier with its own close function when it goes out of scope.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const noexcept { return id_; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+Handle link_creation_with_parents() {
+  Handle list(checked(H5Pcreate(H5P_LINK_CREATE), "property list"), H5Pclose);
+  check(H5Pset_create_intermediate_group(list.get(), 1), "intermediate groups");
+  return Handle(H5Pcopy(list.get()), H5Pclose);
+}
+
+void write_string_attribute(hid_t object, const std::string& name, const std::string& value) {
+  Handle type(checked(H5Tcopy(H5T_C_S1), "string type"), H5Tclose);
+  check(H5Tset_size(type.get(), value.empty() ? 1 : value.size()), "string size");
+  check(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), "string padding");
+  Handle space(checked(H5Screate(H5S_SCALAR), "scalar space"), H5Sclose);
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  Handle attribute(checked(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                           "attribute " + name),
+                   H5Aclose);
+  check(H5Awrite(attribute.get(), type.get(), value.c_str()), "attribute " + name);
+}
+
+void write_double_attribute(hid_t object, const std::string& name, const double* values, hsize_t count) {
+  Handle space(checked(count == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &count, nullptr), "space"),
+               H5Sclose);
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  Handle attribute(checked(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                           "attribute " + name),
+                   H5Aclose);
+  check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values), "attribute " + name);
+}
+
+void describe(hid_t dataset, const std::string& units, const std::string& description) {
+  write_string_attribute(dataset, "units", units);
+  write_string_attribute(dataset, "description", description);
+}
+
+}  // namespace
+
+Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) {
+  // Errors become exceptions with context; HDF5's own stack printing would only add noise.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  file_ = H5Fcreate(path.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("HDF5: cannot create " + path.string());
+}
+
+Hdf5Writer::~Hdf5Writer() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void Hdf5Writer::group(const std::string& path) {
+  if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0) return;
+  const Handle links = link_creation_with_parents();
+  Handle g(checked(H5Gcreate2(file_, path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT), "group " + path),
+           H5Gclose);
+}
+
+void Hdf5Writer::write(const std::string& path, const Eigen::VectorXd& data, const std::string& units,
+                       const std::string& description) {
+  const hsize_t size = static_cast<hsize_t>(data.size());
+  Handle space(checked(H5Screate_simple(1, &size, nullptr), "space"), H5Sclose);
+  const Handle links = link_creation_with_parents();
+  Handle dataset(checked(H5Dcreate2(file_, path.c_str(), H5T_IEEE_F64LE, space.get(), links.get(), H5P_DEFAULT,
+                                    H5P_DEFAULT),
+                         "dataset " + path),
+                 H5Dclose);
+  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + path);
+  describe(dataset.get(), units, description);
+}
+
+void Hdf5Writer::write(const std::string& path, const Eigen::MatrixXd& data, const std::string& units,
+                       const std::string& description) {
+  const hsize_t dims[2] = {static_cast<hsize_t>(data.rows()), static_cast<hsize_t>(data.cols())};
+  Handle space(checked(H5Screate_simple(2, dims, nullptr), "space"), H5Sclose);
+  const Handle links = link_creation_with_parents();
+  Handle dataset(checked(H5Dcreate2(file_, path.c_str(), H5T_IEEE_F64LE, space.get(), links.get(), H5P_DEFAULT,
+                                    H5P_DEFAULT),
+                         "dataset " + path),
+                 H5Dclose);
+  // HDF5 stores C order: the row-major copy of the matrix.
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
+  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()), "write " + path);
+  describe(dataset.get(), units, description);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, double value) {
+  Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
+  write_double_attribute(target.get(), name, &value, 1);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
+  Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
+  write_string_attribute(target.get(), name, value);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::vector<double>& values) {
+  Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
+  write_double_attribute(target.get(), name, values.data(), static_cast<hsize_t>(values.size()));
+}
+
+std::unique_ptr<Hdf5Writer::SliceStream> Hdf5Writer::slices(const std::string& path, std::size_t count,
+                                                            std::size_t rows, std::size_t cols,
+                                                            const std::string& units,
+                                                            const std::string& description) {
+  const hsize_t dims[3] = {count, rows, cols};
+  const hsize_t chunk[3] = {1, rows, cols};
+  Handle space(checked(H5Screate_simple(3, dims, nullptr), "space"), H5Sclose);
+  Handle properties(checked(H5Pcreate(H5P_DATASET_CREATE), "properties"), H5Pclose);
+  check(H5Pset_chunk(properties.get(), 3, chunk), "chunking");
+  check(H5Pset_shuffle(properties.get()), "shuffle");
+  check(H5Pset_deflate(properties.get(), 1), "compression");
+  const Handle links = link_creation_with_parents();
+  const hid_t dataset = checked(H5Dcreate2(file_, path.c_str(), H5T_IEEE_F32LE, space.get(), links.get(),
+                                           properties.get(), H5P_DEFAULT),
+                                "dataset " + path);
+  describe(dataset, units, description);
+  return std::unique_ptr<SliceStream>(new SliceStream(dataset, count, rows, cols));
+}
+
+Hdf5Writer::SliceStream::SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols)
+    : dataset_(dataset), count_(count), rows_(rows), cols_(cols) {}
+
+Hdf5Writer::SliceStream::~SliceStream() { H5Dclose(dataset_); }
+
+void Hdf5Writer::SliceStream::append(const float* slice) {
+  if (written_ >= count_) throw std::logic_error("HDF5 slice stream: more slices than declared");
+  Handle file_space(checked(H5Dget_space(dataset_), "space"), H5Sclose);
+  const hsize_t start[3] = {written_, 0, 0};
+  const hsize_t size[3] = {1, rows_, cols_};
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, size, nullptr), "selection");
+  Handle memory(checked(H5Screate_simple(3, size, nullptr), "memory space"), H5Sclose);
+  check(H5Dwrite(dataset_, H5T_NATIVE_FLOAT, memory.get(), file_space.get(), H5P_DEFAULT, slice), "write slice");
+  ++written_;
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,61 @@
+#pragma once
+// Writing large fields to HDF5 (ARCHITECTURE.md: "HDF5 for large fields"), readable from
+// MATLAB (h5read), Python (h5py) and the HDF5 tools. Datasets carry their units and a
+// description as attributes. Arrays are written in C order: an Eigen column-major matrix of
+// samples × points is stored as [samples][points] by writing its transpose's memory.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace rollnoise {
+
+class Hdf5Writer {
+ public:
+  // Creates (or truncates) the file. Throws std::runtime_error on failure.
+  explicit Hdf5Writer(const std::filesystem::path& path);
+  ~Hdf5Writer();
+  Hdf5Writer(const Hdf5Writer&) = delete;
+  Hdf5Writer& operator=(const Hdf5Writer&) = delete;
+
+  // A group ("contact", "surface/fields"); parents are created as needed.
+  void group(const std::string& path);
+  // 1-D dataset of doubles.
+  void write(const std::string& path, const Eigen::VectorXd& data, const std::string& units,
+             const std::string& description);
+  // 2-D dataset [rows][cols] of doubles from a matrix (any storage order).
+  void write(const std::string& path, const Eigen::MatrixXd& data, const std::string& units,
+             const std::string& description);
+  // Attributes on a group or dataset ("/" for the file).
+  void attribute(const std::string& object, const std::string& name, double value);
+  void attribute(const std::string& object, const std::string& name, const std::string& value);
+  void attribute(const std::string& object, const std::string& name, const std::vector<double>& values);
+
+  // A 3-D float dataset [count][rows][cols] written one [rows][cols] slice at a time, chunked
+  // and compressed by slice, for fields too large to keep in memory.
+  class SliceStream {
+   public:
+    ~SliceStream();
+    SliceStream(const SliceStream&) = delete;
+    SliceStream& operator=(const SliceStream&) = delete;
+    // `slice` holds rows × cols values in C order (row-major).
+    void append(const float* slice);
+    std::size_t written() const noexcept { return written_; }
+
+   private:
+    friend class Hdf5Writer;
+    SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols);
+    std::int64_t dataset_;
+    std::size_t count_, rows_, cols_, written_ = 0;
+  };
+  std::unique_ptr<SliceStream> slices(const std::string& path, std::size_t count, std::size_t rows,
+                                      std::size_t cols, const std::string& units, const std::string& description);
+
+ private:
+  std::int64_t file_;
+};
+
+}  // namespace rollnoise

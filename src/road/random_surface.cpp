@@ -1,0 +1,249 @@
+#include "road/random_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+#include <fftw3.h>
+
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "road/portable_normal.hpp"
+#include "core/fftw_planner_lock.hpp"
+
+namespace rollnoise {
+namespace {
+
+struct FftwPlan {
+  fftw_plan plan = nullptr;
+  FftwPlan(int n0, int n1, fftw_complex* in, double* out) {
+    const std::lock_guard lock(fftw_planner_mutex());
+    // FFTW_ESTIMATE: no timing-dependent plan choice, so the result does not vary run to run.
+    plan = fftw_plan_dft_c2r_2d(n0, n1, in, out, FFTW_ESTIMATE);
+  }
+  ~FftwPlan() {
+    const std::lock_guard lock(fftw_planner_mutex());
+    if (plan) fftw_destroy_plan(plan);
+  }
+  FftwPlan(const FftwPlan&) = delete;
+  FftwPlan& operator=(const FftwPlan&) = delete;
+};
+
+// Smallest n' >= n of the form 2^a 3^b 5^c, sizes for which FFTW is fast.
+std::size_t fft_friendly_size(std::size_t n) {
+  std::size_t best = std::size_t{1};
+  while (best < n) best *= 2;  // a power of two always qualifies
+  for (std::size_t p5 = 1; p5 < 2 * n; p5 *= 5) {
+    for (std::size_t p35 = p5; p35 < 2 * n; p35 *= 3) {
+      std::size_t candidate = p35;
+      while (candidate < n) candidate *= 2;
+      best = std::min(best, candidate);
+    }
+  }
+  return best;
+}
+
+[[noreturn]] void bad(const char* key, const std::string& problem) {
+  throw InputError("", key, problem);
+}
+
+double require_positive(const char* key, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    bad(key, "must be a finite number > 0 (got " + format_number(value) + ")");
+  }
+  return value;
+}
+
+// Points within this fraction of a sample spacing outside the grid are taken as on its edge, so
+// that rounding in x / spacing does not reject the grid's own end points.
+constexpr double edge_slack = 1e-9;
+
+}  // namespace
+
+void RandomSurface::FftwFree::operator()(double* p) const noexcept { fftw_free(p); }
+
+RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
+  using Spectrum = RandomSurfaceSpec::Spectrum;
+  if (!std::isfinite(spec.x_max)) throw std::invalid_argument("RandomSurface: x_max must be finite");
+  if (!(spec.half_width >= 0.0) || !std::isfinite(spec.half_width)) {
+    throw std::invalid_argument("RandomSurface: half_width must be finite and >= 0");
+  }
+  const double std_dev = require_positive("std_dev", spec.std_dev);
+  const bool gaussian = spec.spectrum == Spectrum::gaussian;
+
+  double shortest = 0.0;
+  double longest = 0.0;
+  if (gaussian) {
+    shortest = longest = require_positive("correlation_length", spec.correlation_length);
+  } else {
+    shortest = require_positive("min_wavelength", spec.min_wavelength);
+    longest = require_positive("max_wavelength", spec.max_wavelength);
+    if (!(shortest < longest)) {
+      bad("min_wavelength", "must be less than max_wavelength (got " + format_number(shortest) +
+                                " and " + format_number(longest) + ")");
+    }
+  }
+
+  spacing_ = require_positive("sample_spacing", spec.sample_spacing.value_or(shortest / 8.0));
+  // The grid must resolve the spectrum: the band up to the Nyquist wavenumber 1/(2 spacing) on
+  // each axis (the disc |n| <= 1/min_wavelength fits in the Nyquist square); for the Gaussian,
+  // spacing <= lc/2 leaves out spectral density below exp(-pi^2) ~ 5e-5 of its peak.
+  if (spacing_ > shortest / 2.0) {
+    bad("sample_spacing", std::string("must be at most ") +
+                              (gaussian ? "correlation_length / 2" : "min_wavelength / 2") +
+                              " to resolve the spectrum (got " + format_number(spacing_) +
+                              ", limit " + format_number(shortest / 2.0) + ")");
+  }
+
+  lead_in_ = spec.lead_in.value_or(2.0 * longest);
+  if (!(lead_in_ >= 0.0) || !std::isfinite(lead_in_)) {
+    bad("lead_in", "must be a finite number >= 0 (got " + format_number(lead_in_) + ")");
+  }
+  const double length = require_positive("length", spec.length);
+  const double width = require_positive("width", spec.width);
+  if (spec.half_width > width / 2.0) {
+    bad("width", "the surface is " + format_number(width) +
+                     " m wide (y from -width/2 to width/2), but the tyre's contact grid reaches "
+                     "|y| = " + format_number(spec.half_width) +
+                     " m; set width to at least " + format_number(2.0 * spec.half_width) + " m");
+  }
+
+  // Covered extents, in samples. Compared as doubles first: an absurd ratio must not overflow
+  // the conversion to an integer.
+  const double cover_x = std::max(length, spec.x_max);
+  const double last_x_d = std::max(1.0, std::ceil(cover_x / spacing_));
+  const double half_y_d = std::max(1.0, std::ceil(width / 2.0 / spacing_));
+  // The periodic wrap must not correlate the far edge of the stored grid with its near edge
+  // (Gaussian: 5 lc, R = e^-25; band: 4 max_wavelength), and the periods hold many modes of the
+  // spectrum even for a small surface.
+  const double margin = (gaussian ? 5.0 : 4.0) * longest;
+  const double min_period = (gaussian ? 16.0 : 8.0) * longest;
+  const double margin_samples = std::ceil(margin / spacing_);
+  const double min_samples = std::ceil(min_period / spacing_);
+  const double needed_x = std::max(last_x_d + margin_samples, min_samples);
+  const double needed_y = std::max(2.0 * half_y_d + margin_samples, min_samples);
+  const double limit = static_cast<double>(max_grid_points);
+  const auto too_big = [&](double points) {
+    bad("sample_spacing", "the surface needs a synthesis grid of " + format_number(points) +
+                              " samples, more than the limit of 2^26; use a larger "
+                              "sample_spacing, a shorter length or run, or a smaller width");
+  };
+  if (!(needed_x * needed_y <= limit)) too_big(needed_x * needed_y);
+  const std::size_t n0 = fft_friendly_size(static_cast<std::size_t>(needed_x));
+  const std::size_t n1 = fft_friendly_size(static_cast<std::size_t>(needed_y));
+  if (static_cast<double>(n0) * static_cast<double>(n1) > limit) {
+    too_big(static_cast<double>(n0) * static_cast<double>(n1));
+  }
+  grid_x_ = n0;
+  grid_y_ = n1;
+  x_count_ = static_cast<std::size_t>(last_x_d) + 1;
+  const auto half_y = static_cast<std::size_t>(half_y_d);
+  y_count_ = 2 * half_y + 1;
+
+  // In-place real-to-complex layout: n0 rows of n1/2+1 complex numbers, read back as n0 rows
+  // of n1 real numbers with a stride of 2 (n1/2+1).
+  const std::size_t half = n1 / 2 + 1;
+  stride_ = 2 * half;
+  data_.reset(fftw_alloc_real(n0 * stride_));
+  if (!data_) throw std::bad_alloc();
+  auto* spectrum = reinterpret_cast<fftw_complex*>(data_.get());
+  const FftwPlan plan(static_cast<int>(n0), static_cast<int>(n1), spectrum, data_.get());
+  if (!plan.plan) throw std::runtime_error("RandomSurface: FFTW could not plan the synthesis");
+
+  // Random complex amplitudes: a complex normal times the square root of the spectral density
+  // at wavenumber (nx, ny) = (i'/Px, k/Py), i' the signed index of row i. The mean and the
+  // Nyquist row and column are left at 0 (beyond both spectra). Every entry of the half
+  // spectrum draws its pair of normals in a fixed order, so the draws do not depend on the
+  // spectrum; the column k = 0 is then made Hermitian, X(-i', 0) = conj X(i', 0), so that each
+  // pair of opposite wavenumbers carries one complex normal, like every other column.
+  const double period_x = spacing_ * static_cast<double>(n0);
+  const double period_y = spacing_ * static_cast<double>(n1);
+  const double band_low = 1.0 / longest;
+  const double band_high = 1.0 / shortest;
+  std::mt19937_64 engine(spec.seed);
+  for (std::size_t i = 0; i < n0; ++i) {
+    const double signed_i = 2 * i <= n0 ? static_cast<double>(i) : static_cast<double>(i) - static_cast<double>(n0);
+    const double nx = signed_i / period_x;
+    for (std::size_t k = 0; k < half; ++k) {
+      const auto [re, im] = portable::standard_normal_pair(engine);
+      const double ny = static_cast<double>(k) / period_y;
+      const double n2 = nx * nx + ny * ny;
+      double amplitude = 0.0;
+      if ((i == 0 && k == 0) || 2 * i == n0 || 2 * k == n1) {
+        amplitude = 0.0;
+      } else if (gaussian) {
+        // 2-D density of R = s^2 exp(-(r/lc)^2): pi s^2 lc^2 exp(-pi^2 lc^2 |n|^2) (n in
+        // cycles/m); its square root up to a constant factor that the scaling removes.
+        amplitude = std::exp(-0.5 * std::numbers::pi * std::numbers::pi * longest * longest * n2);
+      } else {
+        const double magnitude = std::sqrt(n2);
+        amplitude = (magnitude >= band_low && magnitude <= band_high) ? 1.0 : 0.0;
+      }
+      spectrum[i * half + k][0] = amplitude * re;
+      spectrum[i * half + k][1] = amplitude * im;
+    }
+  }
+  for (std::size_t i = 1; 2 * i < n0; ++i) {
+    spectrum[(n0 - i) * half][0] = spectrum[i * half][0];
+    spectrum[(n0 - i) * half][1] = -spectrum[i * half][1];
+  }
+  fftw_execute(plan.plan);
+
+  // Scale so that the standard deviation over the stored grid (every point of [0, end_x()] x
+  // [-half_extent_y(), half_extent_y()]) is exactly std_dev, population form, mean not removed:
+  // these points are the whole surface any run sees. Then the lead-in window.
+  double* const r = data_.get();
+  const double count = static_cast<double>(x_count_) * static_cast<double>(y_count_);
+  double mean = 0.0;
+  for (std::size_t i = 0; i < x_count_; ++i) {
+    for (std::size_t j = 0; j < y_count_; ++j) mean += r[i * stride_ + j];
+  }
+  mean /= count;
+  double sum_sq = 0.0;
+  for (std::size_t i = 0; i < x_count_; ++i) {
+    for (std::size_t j = 0; j < y_count_; ++j) {
+      const double d = r[i * stride_ + j] - mean;
+      sum_sq += d * d;
+    }
+  }
+  const double deviation = std::sqrt(sum_sq / count);
+  if (!(deviation > 0.0) || !std::isfinite(deviation)) {
+    throw std::logic_error("RandomSurface: the synthesised surface has no variance");
+  }
+  const double scale = std_dev / deviation;
+  for (std::size_t i = 0; i < x_count_; ++i) {
+    double factor = scale;
+    const double x = spacing_ * static_cast<double>(i);
+    // Raised cosine: 0 with zero slope at x = 0, 1 with zero slope at lead_in.
+    if (x < lead_in_) factor *= 0.5 * (1.0 - std::cos(std::numbers::pi * x / lead_in_));
+    for (std::size_t j = 0; j < y_count_; ++j) r[i * stride_ + j] *= factor;
+  }
+}
+
+std::string RandomSurface::type() const { return "random_surface"; }
+
+double RandomSurface::height(double x, double y) const {
+  if (x < 0.0) return 0.0;  // lead-in convention (road_profile.hpp)
+  const auto last_x = static_cast<double>(x_count_ - 1);
+  const auto last_y = static_cast<double>(y_count_ - 1);
+  const double t = x / spacing_;
+  const double u = y / spacing_ + 0.5 * last_y;
+  if (!(t <= last_x + edge_slack) || !(u >= -edge_slack && u <= last_y + edge_slack)) {  // also NaN
+    throw std::logic_error("RandomSurface::height: (x, y) = (" + format_number(x) + ", " +
+                           format_number(y) + ") m is outside the generated surface, x in [0, " +
+                           format_number(end_x()) + "], |y| <= " + format_number(half_extent_y()));
+  }
+  const std::size_t i = std::min(static_cast<std::size_t>(std::max(t, 0.0)), x_count_ - 2);
+  const std::size_t j = std::min(static_cast<std::size_t>(std::max(u, 0.0)), y_count_ - 2);
+  const double fx = std::clamp(t - static_cast<double>(i), 0.0, 1.0);
+  const double fy = std::clamp(u - static_cast<double>(j), 0.0, 1.0);
+  const double* row0 = data_.get() + i * stride_ + j;
+  const double* row1 = row0 + stride_;
+  // Exact at the grid points (weights 1 and 0).
+  return (1.0 - fx) * ((1.0 - fy) * row0[0] + fy * row0[1]) + fx * ((1.0 - fy) * row1[0] + fy * row1[1]);
+}
+
+}  // namespace rollnoise
