@@ -43,6 +43,38 @@ void LcpSolver::reset() {
   active_count_ = 0;
 }
 
+void LcpSolver::warm_start(const std::vector<char>& active) {
+  if (static_cast<Eigen::Index>(active.size()) != a_.rows()) throw std::invalid_argument("warm start has the wrong size");
+  reset();
+  std::vector<Eigen::Index> indices;
+  for (Eigen::Index i = 0; i < a_.rows(); ++i)
+    if (active[static_cast<std::size_t>(i)]) indices.push_back(i);
+  const auto p = static_cast<Eigen::Index>(indices.size());
+  if (p == 0) return;
+  Eigen::MatrixXd block(p, p);
+  for (Eigen::Index b = 0; b < p; ++b)
+    for (Eigen::Index a = 0; a < p; ++a) block(a, b) = a_(indices[a], indices[b]);
+  const Eigen::LLT<Eigen::MatrixXd> llt(block);
+  if (llt.info() != Eigen::Success) return;  // numerically singular: start from nothing instead
+  l_.topLeftCorner(p, p) = llt.matrixL();
+  for (Eigen::Index i = 0; i < p; ++i) {
+    active_.push_back(indices[i]);
+    is_active_[indices[i]] = 1;
+  }
+}
+
+void LcpSolver::relabel_active_set(const std::vector<Eigen::Index>& new_index) {
+  if (static_cast<Eigen::Index>(new_index.size()) != a_.rows()) throw std::invalid_argument("relabel has the wrong size");
+  for (Eigen::Index position = static_cast<Eigen::Index>(active_.size()) - 1; position >= 0; --position) {
+    if (new_index[static_cast<std::size_t>(active_[position])] < 0) remove_from_factor(position);
+  }
+  std::fill(is_active_.begin(), is_active_.end(), 0);
+  for (Eigen::Index& index : active_) {
+    index = new_index[static_cast<std::size_t>(index)];
+    is_active_[index] = 1;
+  }
+}
+
 // Appends `index` to the factor: solve L·l = A[P, j], then d = A[j, j] − l·l. Returns false
 // (and leaves the factor alone) if the pivot is not safely positive.
 bool LcpSolver::add_to_factor(Eigen::Index index) {
@@ -151,6 +183,13 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
   const int max_changes = static_cast<int>(20 * n + 100);
   std::fill(blocked_.begin(), blocked_.end(), 0);
   bool refined = false;
+  // Block additions: every index with w_j < 0 enters at once, then the feasibility loop drops
+  // what does not fit. Each round still lowers the QP objective (the segment towards the
+  // minimiser on the larger set descends), and it saves most of the O(n·p) slack updates when
+  // many contacts change in one step (a rough road). After a bounded number of rounds the
+  // classic single-index rule takes over, whose termination is guaranteed.
+  int block_rounds = 0;
+  constexpr int max_block_rounds = 25;
   while (true) {
     // w = q + A·x, summed over the active columns only (x is 0 elsewhere).
     w_ = q;
@@ -182,12 +221,25 @@ const Eigen::VectorXd& LcpSolver::solve(const Eigen::Ref<const Eigen::VectorXd>&
       for (Eigen::Index i = 0; i < p; ++i) x_(active_[i]) += dx(i);
       continue;  // recompute w and recheck optimality
     }
-    if (!add_to_factor(entering)) {
-      // A_PP ∪ {j} is numerically singular (j duplicates active points): x_j = 0 is optimal.
-      blocked_[entering] = 1;
-      continue;
+    if (block_rounds < max_block_rounds) {
+      ++block_rounds;
+      int added = 0;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        if (!is_active_[j] && !blocked_[j] && w_(j) < -tolerance) {
+          if (add_to_factor(j)) ++added;
+          else blocked_[j] = 1;  // numerically singular with the active points: x_j = 0 fits
+        }
+      }
+      iterations_ += added;
+      if (added == 0) continue;
+    } else {
+      if (!add_to_factor(entering)) {
+        // A_PP ∪ {j} is numerically singular (j duplicates active points): x_j = 0 is optimal.
+        blocked_[entering] = 1;
+        continue;
+      }
+      ++iterations_;
     }
-    ++iterations_;
     if (iterations_ > max_changes) {
       throw std::runtime_error("LCP solver did not terminate after " + std::to_string(max_changes) +
                                " active-set changes (n = " + std::to_string(n) + ")");

@@ -40,6 +40,18 @@ class LcpSolver {
   Eigen::Index size() const noexcept { return a_.rows(); }
   // Forget the warm start (the next solve starts from an empty active set).
   void reset();
+  // Use `active` (one flag per index) as the next warm start, refactoring A on it (O(p³)):
+  // worth it when the caller knows a better guess than the last active set, such as the last
+  // set shifted with a rolling road.
+  void warm_start(const std::vector<char>& active);
+  // Moves the warm start to other indices without refactoring: active index a becomes
+  // new_index[a], or leaves the set where new_index[a] < 0. Valid when A is the same on the new
+  // indices as on the old, A(new_index[a], new_index[b]) = A(a, b) (e.g. a translation-invariant
+  // contact matrix with a set shifted along it); the factor is then unchanged but for the rows
+  // that leave (O(p²) each).
+  void relabel_active_set(const std::vector<Eigen::Index>& new_index);
+  // The active set of the last solve, one flag per index.
+  const std::vector<char>& active_flags() const noexcept { return is_active_; }
 
  private:
   bool add_to_factor(Eigen::Index index);

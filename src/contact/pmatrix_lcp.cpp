@@ -9,13 +9,16 @@
 
 namespace rollnoise {
 
-PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q) {
+PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                                   const std::vector<char>* start) {
   const Eigen::Index n = q.size();
   if (m.rows() != n || m.cols() != n) throw std::invalid_argument("P-matrix LCP: sizes differ");
-  PMatrixLcpResult result{Eigen::VectorXd::Zero(n), q, 0};
-  // Start from the points that penetrate with no force.
+  PMatrixLcpResult result{Eigen::VectorXd::Zero(n), q, 0, {}};
+  // Start from the guess, or from the points that penetrate with no force.
   std::vector<char> basic(static_cast<std::size_t>(n), 0);
-  for (Eigen::Index i = 0; i < n; ++i) basic[i] = q(i) < 0.0;
+  if (start && static_cast<Eigen::Index>(start->size()) == n) basic = *start;
+  else
+    for (Eigen::Index i = 0; i < n; ++i) basic[i] = q(i) < 0.0;
   const double tolerance = 1e-13 * (q.cwiseAbs().maxCoeff() + 1e-300);
   Eigen::Index best = n + 1;
   int backups = 10;
@@ -52,6 +55,7 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
     result.iterations = iteration;
     if (infeasible == 0) {
       result.z = result.z.cwiseMax(0.0);
+      result.basic = basic;
       return result;
     }
     if (infeasible < best || backups > 0) {

@@ -7,6 +7,8 @@
 // infeasible indices at once while their number falls, and fall back to Murty's single
 // least-index pivot, which terminates finitely for P-matrices, when it does not. Each
 // iteration solves the active block with a dense LU.
+#include <vector>
+
 #include <Eigen/Core>
 
 namespace rollnoise {
@@ -15,8 +17,12 @@ struct PMatrixLcpResult {
   Eigen::VectorXd z;  // the solution
   Eigen::VectorXd w;  // M·z + q
   int iterations = 0;
+  std::vector<char> basic;  // the final set of indices with z free (w = 0)
 };
 
-PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q);
+// `start`: a first guess of the basic set (for example the last solution's, for a nearby q);
+// without one, the indices with q < 0.
+PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                                   const std::vector<char>* start = nullptr);
 
 }  // namespace rollnoise

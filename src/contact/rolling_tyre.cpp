@@ -114,6 +114,13 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd u0(points), r(points), q(points), position(points), deformation(points);
   Eigen::VectorXd previous_force = steady.force;
+  // Window point (i, j) → (i − 1, j); the last column's points leave.
+  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 1; i < grid.window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+      shift_back[static_cast<std::size_t>(p)] = p - 1;
+    }
   Eigen::VectorXd previous_deformation = steady.deformation;
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
@@ -126,6 +133,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     engine->history(u0);
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
+    // The road moves one cell towards −x per step, and the contacts on its texture with it:
+    // the last active set shifted by one cell is the better first guess. The contact matrix
+    // depends on x_p − x_q only, so the shifted set keeps its factor.
+    if (n > 0) lcp.relabel_active_set(shift_back);
     const Eigen::VectorXd& force = lcp.solve(q);
     deformation.noalias() = g0_symmetric * force;
     deformation += u0;

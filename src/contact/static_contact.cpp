@@ -19,8 +19,13 @@ StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
   if (load == 0.0) return result;
 
   Eigen::VectorXd force = Eigen::VectorXd::Zero(n);
+  // Each solve starts from the last one's contact set: the indentations tried converge.
+  std::vector<char> basic;
   auto total_at = [&](double d) {
-    force = solve_pmatrix_lcp(compliance, (undeformed_gap.array() - d).matrix()).z;
+    PMatrixLcpResult r = solve_pmatrix_lcp(compliance, (undeformed_gap.array() - d).matrix(),
+                                           basic.empty() ? nullptr : &basic);
+    force = std::move(r.z);
+    basic = std::move(r.basic);
     return force.sum();
   };
   // First guess: every point in contact.

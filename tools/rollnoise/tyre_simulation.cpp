@@ -245,7 +245,10 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
   const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history};
+  const auto contact_started = std::chrono::steady_clock::now();
   const TyreContactTrace trace = simulate_rolling_tyre(*rolling_plate, local, *road, run, &progress);
+  const double contact_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count();
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   write_totals_csv(staged.staging() / "contact.csv", trace);
@@ -301,6 +304,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"history", to_string(settings.history)}};
   summary["warnings"] = trace.warnings;
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
+  summary["contact_time_s"] = contact_seconds;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
