@@ -105,6 +105,12 @@ void check_one(const fs::path& file, const std::vector<std::string>& overrides,
     ++tally.loaded;
     const rollnoise::CaseFile& cases = *loaded;
     std::unique_ptr<rollnoise::GreensModel> model;
+    // The plate tyre's readers (the tyre and its [rolling] keys) take the same bytes.
+    if (guarded("read_plate_tyre", [&] { (void)rollnoise::read_plate_tyre(cases.section("tyre")); })) ++tally.models;
+    if (guarded("read_tyre_rolling_settings",
+                [&] { (void)rollnoise::read_tyre_rolling_settings(cases.section("rolling")); })) {
+      ++tally.settings;
+    }
     if (guarded("make_greens_model", [&] {
           model = rollnoise::make_greens_model(cases.section("tyre"));
           // Use what was built: a model must answer these for any accepted parameters.
@@ -129,7 +135,9 @@ void check_one(const fs::path& file, const std::vector<std::string>& overrides,
   // The same bytes as a model file (the keys of [tyre] at the top level).
   if (guarded("CaseFile::load_model", [&] {
         const rollnoise::CaseFile model_file = rollnoise::CaseFile::load_model(file, overrides);
-        (void)rollnoise::make_greens_model(model_file.top());
+        const rollnoise::ConfigTable top = model_file.top();
+        if (top.contains("model") && top.text("model") == "plate") (void)rollnoise::read_plate_tyre(top);
+        else (void)rollnoise::make_greens_model(top);
       })) {
     ++tally.model_files;
   }
@@ -350,6 +358,8 @@ std::vector<std::string> seed_texts() {
     texts.push_back(read_bytes(file));
     texts.push_back(tyre_table_of(texts.back()));
   }
+  // Model files (the plate tyre's keys at the top level).
+  for (const auto& file : files_in(project("models/tyres"))) texts.push_back(read_bytes(file));
   for (const auto& file : files_in(project("tests/corpus/toml"))) texts.push_back(read_bytes(file));
   return texts;
 }
