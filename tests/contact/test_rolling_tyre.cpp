@@ -79,6 +79,39 @@ TEST(RollingTyre, ModalEngineEqualsDirect) {
   EXPECT_LE((modal.displacement - direct.displacement).cwiseAbs().maxCoeff(), 1e-9 * displacement_scale);
 }
 
+TEST(RollingTyre, RoughRoadKeepsTheContactConditionsAtEveryStep) {
+  const KroppPlate plate(small_plate(0.1));
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  for (const Eigen::MatrixXd& local :
+       {tread(grid), halfspace_compliance(grid.positions(), grid.dx(), grid.dy(), 4e6, 0.48)}) {
+    const TyreContactTrace t =
+        simulate_rolling_tyre(rolling, local, Bumps(), {speed, 200 * grid.dx() / speed, 3200.0, HistoryKind::modal});
+    const Eigen::MatrixXd gap = t.displacement - t.road;
+    const double max_force = t.force.maxCoeff();
+    const double max_gap = gap.maxCoeff();
+    EXPECT_GE(t.force.minCoeff(), 0.0);
+    EXPECT_GE(gap.minCoeff(), -1e-12);  // m: no penetration
+    EXPECT_LE((t.force.array() * gap.array()).abs().maxCoeff(), 1e-12 * max_force * max_gap);
+    // The bumps make contact come and go.
+    EXPECT_LT(t.contact_area.minCoeff(), 0.9 * t.contact_area.maxCoeff());
+  }
+}
+
+TEST(RollingTyre, HalfspaceTreadModalEqualsDirect) {
+  const KroppPlate plate(small_plate(0.1));
+  const TyreGrid grid = small_grid();
+  const double speed = 15.0;
+  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const Eigen::MatrixXd local = halfspace_compliance(grid.positions(), grid.dx(), grid.dy(), 4e6, 0.48);
+  TyreRunSettings settings{speed, 40 * grid.dx() / speed, 2500.0, HistoryKind::direct};
+  const TyreContactTrace direct = simulate_rolling_tyre(rolling, local, Bumps(), settings);
+  settings.history = HistoryKind::modal;
+  const TyreContactTrace modal = simulate_rolling_tyre(rolling, local, Bumps(), settings);
+  EXPECT_LE((modal.force - direct.force).cwiseAbs().maxCoeff(), 1e-9 * direct.force.cwiseAbs().maxCoeff());
+}
+
 TEST(RollingTyre, SmoothRoadKeepsTheSteadyState) {
   const KroppPlate plate(small_plate(0.15));
   const TyreGrid grid = small_grid();
