@@ -299,6 +299,44 @@ TEST(SimulateCli, SdofSineWritesContactCsvSummaryAndPlotScript) {
       << "only the case and the output folder";
 }
 
+TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  ws.write("tyre.toml", edit_case(project_case("plate_rough_80kmh.toml"),
+                                  {{"tyre", "file", "\"" + model + "\""}, {"rolling", "duration", "0.01"}}));
+  const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_EQ(first_line(ws.path("tyre") / "contact.csv"), "time,total_force,contact_area,contact_length");
+  const nlohmann::json summary = read_json(ws.path("tyre") / "summary.json");
+  for (const char* key : {"mean_total_force_N", "max_total_force_N", "mean_contact_area_m2", "patch_length_m",
+                          "patch_width_m", "rolling_resistance_N", "wall_time_s"}) {
+    EXPECT_TRUE(summary.contains(key) && summary[key].is_number()) << key;
+  }
+  EXPECT_EQ(summary["history_engine"], "modal");  // auto picks the modal engine for the plate
+  EXPECT_GT(fs::file_size(ws.path("tyre") / "contact.h5"), 100000u);
+  // The HDF5 signature: the file is HDF5, not a stub.
+  EXPECT_EQ(read_text(ws.path("tyre") / "contact.h5").substr(0, 8), std::string("\x89HDF\r\n\x1a\n"));
+  if (gnuplot_installed()) {
+    for (const char* plot : {"pressure_map", "total_force", "greens_circumference"}) {
+      EXPECT_TRUE(fs::exists(ws.path("tyre") / (std::string(plot) + ".png"))) << plot;
+      EXPECT_TRUE(fs::exists(ws.path("tyre") / (std::string(plot) + ".gp"))) << plot;
+    }
+  }
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+TEST(SimulateCli, PlateTyreRejectsAGivenTimeStep) {
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  ws.write("tyre.toml", edit_case(project_case("plate_smooth_80kmh.toml"),
+                                  {{"tyre", "file", "\"" + model + "\""}, {"rolling", "time_step", "1e-4"}}));
+  const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "[rolling] time_step")) << r.err;
+  EXPECT_TRUE(contains(r.err, "derived from the grid")) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("tyre")));
+}
+
 TEST(SimulateCli, CoupledSdofWritesColumnsForBothPoints) {
   Workspace ws;
   ws.write("coupled.toml",
