@@ -1,5 +1,6 @@
 #include "contact/rolling_tyre.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -124,13 +125,16 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   Eigen::VectorXd previous_deformation = steady.deformation;
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
+  const auto loop_started = std::chrono::steady_clock::now();
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
     for (int j = 0; j < grid.lateral; ++j)
       for (int i = 0; i < grid.window; ++i)
         r(i + static_cast<Eigen::Index>(grid.window) * j) =
             road.height(grid.x(i) + settings.speed * t, grid.y(j) - 0.5 * grid.width);
+    auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
+    trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
     // The road moves one cell towards −x per step, and the contacts on its texture with it:
@@ -172,9 +176,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     previous_force = force;
     previous_deformation = deformation;
     trace.lcp_iterations[n] = lcp.iterations();
+    clock = std::chrono::steady_clock::now();
     engine->advance(force);
+    trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     if (progress) progress->update(n);
   }
+  trace.step_loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count();
   if (progress) progress->finish();
   return trace;
 }

@@ -46,6 +46,8 @@ struct TyreContactTrace {
   double steady_rolling_resistance = 0.0;  // N, from F_s and the steady deformation
   std::string engine;
   std::vector<std::string> warnings;
+  double step_loop_seconds = 0.0;  // wall time of the time-step loop alone (no setup)
+  double history_seconds = 0.0;    // of which in the history engine (u⁰ and the update)
 };
 
 // The steady rolling state on a smooth road under load W: indentation and forces.

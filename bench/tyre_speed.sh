@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Speed of the rolling tyre on plate_rough_80kmh: 1 s of rolling with the modal engine, and a
+# shortened run with both engines for the per-step speed-up over `direct` (whose dense kernel
+# grows with the run: it is the reference, not a production engine). Timed CLI runs; the figures
+# come from each run's summary.json (step_loop_time_s: the time-step loop alone).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh >/dev/null
+cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF >/dev/null
+cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
+exe=build-bench/tools/rollnoise/rollnoise
+case=models/cases/plate_rough_80kmh.toml
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+run() {  # name engine duration
+  CI=true "$exe" simulate "$case" --out "$out/$1" --set rolling.history="$2" --set rolling.duration="$3" \
+    --set output.plots=false >/dev/null
+}
+field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d$2)" "$out/$1/summary.json"; }
+run modal_1s modal 1.0
+run modal_short modal 0.01
+run direct_short direct 0.01
+steps_short=$(field modal_short "['settings']['steps']")
+modal_step=$(python3 -c "print($(field modal_short "['step_loop_time_s']")/($steps_short+1))")
+direct_step=$(python3 -c "print($(field direct_short "['step_loop_time_s']")/($steps_short+1))")
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "plate_rough_80kmh, $(field modal_1s "['grid']['contact_points']") contact points, $(field modal_1s "['settings']['steps']") steps per simulated second"
+echo "modal, 1 s of rolling: step loop $(field modal_1s "['step_loop_time_s']") s, contact stage $(field modal_1s "['contact_time_s']") s, whole run with outputs $(field modal_1s "['wall_time_s']") s"
+modal_history=$(python3 -c "print($(field modal_short "['history_engine_time_s']")/($steps_short+1))")
+direct_history=$(python3 -c "print($(field direct_short "['history_engine_time_s']")/($steps_short+1))")
+steps_1s=$(field modal_1s "['settings']['steps']")
+echo "shortened run ($((steps_short + 1)) steps), per step: whole step modal ${modal_step} s, direct ${direct_step} s: speed-up $(python3 -c "print(round($direct_step/$modal_step, 1))")x"
+echo "  history engine alone: modal ${modal_history} s, direct ${direct_history} s (mean over a history of 0-${steps_short} steps): speed-up $(python3 -c "print(round($direct_history/$modal_history, 1))")x"
+# The direct engine's cost is linear in the history length (eq. 3): extrapolate to the last
+# step of 1 s of rolling, where its kernel would need $steps_1s lags (P² doubles each).
+echo "  direct at the end of 1 s (history ${steps_1s} steps, extrapolated linearly): $(python3 -c "print(round($direct_history*2*$steps_1s/$steps_short, 2))") s per step, $(python3 -c "print(round($direct_history*2*$steps_1s/$steps_short/$modal_history))")x the modal engine; its kernel alone would take $(python3 -c "print(round($steps_1s*$(field modal_1s "['grid']['contact_points']")**2*8/1e9, 1))") GB"
