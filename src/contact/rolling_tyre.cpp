@@ -137,10 +137,24 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
-    // The road moves one cell towards −x per step, and the contacts on its texture with it:
-    // the last active set shifted by one cell is the better first guess. The contact matrix
-    // depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0) lcp.relabel_active_set(shift_back);
+    // The road moves one cell towards −x per step, and the contacts on its texture with it;
+    // the patch outline stays. Of the last active set, as it is or shifted by one cell, take
+    // the one that agrees better with the points that penetrate now (q < 0). The contact
+    // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
+    if (n > 0) {
+      const std::vector<char>& last = lcp.active_flags();
+      long stay = 0, shift = 0;
+      for (Eigen::Index p = 0; p < points; ++p) {
+        const bool penetrates = q(p) < 0.0;
+        stay += (last[static_cast<std::size_t>(p)] != 0) != penetrates;
+        // Shifted, p is active when the point one cell ahead of it (same row) was.
+        const Eigen::Index ahead = p + 1;
+        const bool shifted_in = ahead < points && shift_back[static_cast<std::size_t>(ahead)] == p &&
+                                last[static_cast<std::size_t>(ahead)] != 0;
+        shift += shifted_in != penetrates;
+      }
+      if (shift < stay) lcp.relabel_active_set(shift_back);
+    }
     const Eigen::VectorXd& force = lcp.solve(q);
     deformation.noalias() = g0_symmetric * force;
     deformation += u0;
