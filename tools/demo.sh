@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run the demo cases. Now: the paper's §4 validation cases
-# (an SDOF and two coupled SDOFs on a sine and a random road) and their figures, in out/demo/.
+# The main job: set up, build, and run the demo cases in out/demo/: the paper's §4 validation
+# cases (an SDOF and two coupled SDOFs on a sine and a random road) with their figures, and the
+# 205/55 R16 tyre rolling on a smooth road, a rough road and over a cleat.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 
 out=out/demo
 mkdir -p "$out"
-for case in models/cases/larsson2000_*.toml; do
+for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
   name=$(basename "$case" .toml)
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
