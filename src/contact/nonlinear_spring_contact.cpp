@@ -118,7 +118,7 @@ double fischer_burmeister(double a, double b) {
 }  // namespace
 
 struct NonlinearSpringContact::Impl {
-  Impl(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent);
+  Impl(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent, bool require_symmetric);
 
   // δ_p from y_p: solves δ + c·sign(δ)|δ|ⁿ = y with c = A_pp·k_p.
   double compression_of(double y, Eigen::Index p) const;
@@ -170,7 +170,8 @@ struct NonlinearSpringContact::Impl {
   KinsolPtr kinsol;
 };
 
-NonlinearSpringContact::Impl::Impl(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent)
+NonlinearSpringContact::Impl::Impl(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
+                                   bool require_symmetric)
     : a(std::move(structural)), k(std::move(stiffness)), n(exponent), size(a.rows()) {
   if (a.cols() != size) {
     throw std::invalid_argument("NonlinearSpringContact: the structural compliance A must be square (got " +
@@ -180,10 +181,13 @@ NonlinearSpringContact::Impl::Impl(Eigen::MatrixXd structural, Eigen::VectorXd s
     throw std::invalid_argument("NonlinearSpringContact: the structural compliance A has non-finite entries");
   }
   const double a_max = size > 0 ? a.cwiseAbs().maxCoeff() : 0.0;
-  if (size > 0 && (a - a.transpose()).cwiseAbs().maxCoeff() > 1e-12 * a_max) {
+  if (require_symmetric && size > 0 && (a - a.transpose()).cwiseAbs().maxCoeff() > 1e-12 * a_max) {
     throw std::invalid_argument("NonlinearSpringContact: the structural compliance A is not symmetric");
   }
-  if (size > 0 && a_max > 0.0) {
+  if (!require_symmetric && size > 0 && a.diagonal().minCoeff() < 0.0) {
+    throw std::invalid_argument("NonlinearSpringContact: the structural compliance A has a negative diagonal");
+  }
+  if (require_symmetric && size > 0 && a_max > 0.0) {
     // A non-PSD compliance loses uniqueness of the contact solution (and the P-matrix property
     // Newton relies on); round-off-level negative eigenvalues are tolerated.
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(a, Eigen::EigenvaluesOnly);
@@ -438,8 +442,8 @@ void NonlinearSpringContact::Impl::polish(Eigen::VectorXd& point) {
 }
 
 NonlinearSpringContact::NonlinearSpringContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness,
-                                               double exponent)
-    : impl_(std::make_unique<Impl>(std::move(structural), std::move(stiffness), exponent)) {}
+                                               double exponent, bool require_symmetric)
+    : impl_(std::make_unique<Impl>(std::move(structural), std::move(stiffness), exponent, require_symmetric)) {}
 
 NonlinearSpringContact::~NonlinearSpringContact() = default;
 

@@ -20,7 +20,10 @@ namespace rollnoise {
 class NonlinearSpringContact {
  public:
   // structural: A (P × P, symmetric PSD); stiffness: k_p > 0 (N/m^n); exponent: n ≥ 1.
-  NonlinearSpringContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent);
+  // require_symmetric = false admits a non-symmetric A with a positive-definite symmetric part
+  // (the compliance of steady rolling): I + A·diag(D) is then still non-singular.
+  NonlinearSpringContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
+                         bool require_symmetric = true);
   ~NonlinearSpringContact();
   NonlinearSpringContact(const NonlinearSpringContact&) = delete;
   NonlinearSpringContact& operator=(const NonlinearSpringContact&) = delete;

@@ -7,6 +7,7 @@
 
 #include "contact/direct_history_engine.hpp"
 #include "contact/lcp_solver.hpp"
+#include "contact/nonlinear_tread_contact.hpp"
 #include "contact/modal_history_engine.hpp"
 #include "contact/static_contact.hpp"
 #include "core/error.hpp"
@@ -35,16 +36,68 @@ double power_per_metre(const TyreGrid& grid, const Eigen::VectorXd& force_now, c
 
 }  // namespace
 
+namespace {
+
+// Steady rolling with the nonlinear tread: the indentation d with ΣF(d) = W, where F(d) solves
+// the nonlinear complementarity problem with the steady-rolling compliance T. ΣF is continuous
+// and increasing in d: regula falsi (Illinois) inside a bracket.
+StaticContact steady_nonlinear_contact(const Eigen::MatrixXd& compliance, const Eigen::VectorXd& h, double load,
+                                       const NonlinearTread& tread, Eigen::VectorXd& compression) {
+  NonlinearTreadContact contact(compliance, tread.stiffness, tread.exponent, /*require_symmetric=*/false);
+  const double touch = h.minCoeff();
+  auto excess = [&](double d) {
+    contact.solve((h.array() - d).matrix());
+    return contact.force().sum() - load;
+  };
+  double lo = touch, f_lo = -load;
+  double hi = touch + 1e-3, f_hi = excess(hi);
+  while (f_hi < 0.0) {
+    lo = hi;
+    f_lo = f_hi;
+    hi = touch + 2.0 * (hi - touch);
+    if (hi - touch > 1.0) throw std::runtime_error("steady rolling: no indentation below 1 m carries the load");
+    f_hi = excess(hi);
+  }
+  int side = 0;
+  for (int iteration = 0; iteration < 200 && std::abs(hi - lo) > 1e-15 * std::abs(hi); ++iteration) {
+    const double d = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    const double f = excess(d);
+    if (std::abs(f) <= 1e-12 * load) {
+      lo = hi = d;
+      break;
+    }
+    if (f < 0.0) {
+      lo = d;
+      f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = d;
+      f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+  }
+  const double d = 0.5 * (lo + hi);
+  excess(d);
+  compression = contact.compression();
+  return StaticContact{d, contact.force()};
+}
+
+}  // namespace
+
 SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
-                                   double load) {
+                                   double load, const NonlinearTread* nonlinear) {
   const TyreGrid& grid = plate.grid();
   const Eigen::MatrixXd compliance = local_compliance + plate.rolling_compliance();
   const Eigen::VectorXd h = grid.undeformed_gap();
-  const StaticContact contact = solve_static_contact(compliance, h, load);
+  Eigen::VectorXd compression = Eigen::VectorXd::Zero(h.size());
+  const StaticContact contact = nonlinear ? steady_nonlinear_contact(compliance, h, load, *nonlinear, compression)
+                                          : solve_static_contact(compliance, h, load);
   SteadyRolling steady;
   steady.indentation = contact.indentation;
   steady.force = contact.force;
-  steady.deformation = compliance * contact.force;
+  steady.deformation = compliance * contact.force + compression;
   const Eigen::VectorXd& deformation = steady.deformation;
   steady.displacement = (h.array() - contact.indentation).matrix() + deformation;
   // In steady rolling the material at point p came from point p + 1 one step before, in the
@@ -55,7 +108,7 @@ SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::Matri
 
 TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
-                                       ProgressReporter* progress) {
+                                       ProgressReporter* progress, const NonlinearTread* nonlinear) {
   const TyreGrid& grid = plate.grid();
   const Eigen::Index points = grid.points();
   const double dt = plate.time_step();
@@ -64,7 +117,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
 
-  const SteadyRolling steady = solve_steady_rolling(plate, local_compliance, settings.static_load);
+  if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
+    throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
+  const SteadyRolling steady = solve_steady_rolling(plate, local_compliance, settings.static_load, nonlinear);
 
   std::unique_ptr<HistoryEngine> engine;
   std::shared_ptr<const DiscreteKernel> kernel;
@@ -91,7 +146,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   // discretisation itself. Both history engines see the same split.
   const Eigen::MatrixXd g0_symmetric = 0.5 * (g0 + g0.transpose());
   const Eigen::MatrixXd g0_skew = g0 - g0_symmetric;
-  LcpSolver lcp(g0_symmetric);
+  LcpSolver lcp(nonlinear ? Eigen::MatrixXd::Identity(1, 1) : g0_symmetric);
+  std::unique_ptr<NonlinearTreadContact> springs;
+  if (nonlinear) springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
 
   TyreContactTrace trace;
   trace.engine = engine->name();
@@ -141,7 +198,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     // the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0) {
+    if (n > 0 && !springs) {
       const std::vector<char>& last = lcp.active_flags();
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
@@ -155,9 +212,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
       }
       if (shift < stay) lcp.relabel_active_set(shift_back);
     }
-    const Eigen::VectorXd& force = lcp.solve(q);
+    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp.solve(q);
     deformation.noalias() = g0_symmetric * force;
     deformation += u0;
+    if (springs) deformation += springs->compression();
     position = h + deformation;
     position.array() -= steady.indentation;
 
@@ -189,7 +247,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
                                                               previous_deformation);
     previous_force = force;
     previous_deformation = deformation;
-    trace.lcp_iterations[n] = lcp.iterations();
+    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp.iterations();
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

@@ -58,11 +58,19 @@ struct SteadyRolling {
   Eigen::VectorXd displacement;  // tread surface position h − d + u, m
   double rolling_resistance = 0.0;  // N: the work of the contact forces on u per metre rolled
 };
+// A nonlinear tread (MODEL.md §4): springs F_p = k_p·δ_p^n in series with the belt, instead of a
+// linear local compliance (which must then be zero).
+struct NonlinearTread {
+  Eigen::VectorXd stiffness;  // k_p, N/m^n per window point
+  double exponent = 1.0;      // n ≥ 1
+};
+
 SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
-                                   double load);
+                                   double load, const NonlinearTread* nonlinear = nullptr);
 
 TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
-                                       ProgressReporter* progress = nullptr);
+                                       ProgressReporter* progress = nullptr,
+                                       const NonlinearTread* nonlinear = nullptr);
 
 }  // namespace rollnoise

@@ -112,6 +112,34 @@ TEST(RollingTyre, HalfspaceTreadModalEqualsDirect) {
   EXPECT_LE((modal.force - direct.force).cwiseAbs().maxCoeff(), 1e-9 * direct.force.cwiseAbs().maxCoeff());
 }
 
+TEST(RollingTyre, NonlinearTreadWithExponentOneIsTheWinklerTread) {
+  // KINSOL on F = k·δⁿ with n = 1 against the exact LCP with Winkler springs of the same
+  // stiffness (k_p = k_w·dx·dy), from the steady state on through a rough road.
+  const KroppPlate plate(small_plate(0.1));
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const double k_w = 4e8;
+  const TyreRunSettings settings{speed, 80 * grid.dx() / speed, 3200.0, HistoryKind::modal};
+  const TyreContactTrace linear = simulate_rolling_tyre(rolling, tread(grid), Bumps(), settings);
+  NonlinearTread springs{Eigen::VectorXd::Constant(grid.points(), k_w * grid.dx() * grid.dy()), 1.0};
+  const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(grid.points(), grid.points());
+  const TyreContactTrace nonlinear = simulate_rolling_tyre(rolling, none, Bumps(), settings, nullptr, &springs);
+  EXPECT_NEAR(nonlinear.indentation, linear.indentation, 1e-10 * linear.indentation);
+  EXPECT_LE((nonlinear.force - linear.force).cwiseAbs().maxCoeff(), 1e-8 * linear.force.maxCoeff());
+  EXPECT_LE((nonlinear.displacement - linear.displacement).cwiseAbs().maxCoeff(),
+            1e-8 * linear.displacement.cwiseAbs().maxCoeff());
+
+  // A stiffening tread (n = 1.5) still meets the contact conditions and carries the load.
+  springs.exponent = 1.5;
+  springs.stiffness *= 1e4;  // N/m^1.5: comparable deflections at these loads
+  const TyreContactTrace hertzian = simulate_rolling_tyre(rolling, none, Bumps(), settings, nullptr, &springs);
+  const Eigen::MatrixXd gap = hertzian.displacement - hertzian.road;
+  EXPECT_GE(hertzian.force.minCoeff(), 0.0);
+  EXPECT_GE(gap.minCoeff(), -1e-12);
+  EXPECT_NEAR(hertzian.steady_force.sum(), 3200.0, 1e-9 * 3200.0);
+}
+
 TEST(RollingTyre, SmoothRoadKeepsTheSteadyState) {
   const KroppPlate plate(small_plate(0.15));
   const TyreGrid grid = small_grid();
