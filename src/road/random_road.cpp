@@ -13,7 +13,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
-#include "core/fftw_planner_lock.hpp"
+#include "core/fftw_plan.hpp"
 
 namespace rollnoise {
 namespace {
@@ -21,35 +21,6 @@ namespace {
 struct FftwFree {
   void operator()(void* p) const noexcept { fftw_free(p); }
 };
-
-struct FftwPlan {
-  fftw_plan plan = nullptr;
-  FftwPlan(int n, fftw_complex* in, double* out) {
-    const std::lock_guard lock(fftw_planner_mutex());
-    // FFTW_ESTIMATE: no timing-dependent plan choice, so the result does not vary run to run.
-    plan = fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE);
-  }
-  ~FftwPlan() {
-    const std::lock_guard lock(fftw_planner_mutex());
-    if (plan) fftw_destroy_plan(plan);
-  }
-  FftwPlan(const FftwPlan&) = delete;
-  FftwPlan& operator=(const FftwPlan&) = delete;
-};
-
-// Smallest n' >= n of the form 2^a 3^b 5^c, sizes for which FFTW is fast.
-std::size_t fft_friendly_size(std::size_t n) {
-  std::size_t best = std::size_t{1};
-  while (best < n) best *= 2;  // a power of two always qualifies
-  for (std::size_t p5 = 1; p5 < 2 * n; p5 *= 5) {
-    for (std::size_t p35 = p5; p35 < 2 * n; p35 *= 3) {
-      std::size_t candidate = p35;
-      while (candidate < n) candidate *= 2;
-      best = std::min(best, candidate);
-    }
-  }
-  return best;
-}
 
 [[noreturn]] void bad(const char* key, const std::string& problem) {
   throw InputError("", key, problem);
@@ -130,8 +101,7 @@ RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
   std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
   std::unique_ptr<double[], FftwFree> grid(fftw_alloc_real(n));
   if (!spectrum || !grid) throw std::bad_alloc();
-  const FftwPlan plan(static_cast<int>(n), spectrum.get(), grid.get());
-  if (!plan.plan) throw std::runtime_error("RandomRoad: FFTW could not plan the synthesis");
+  const FftwPlan plan([&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum.get(), grid.get(), FFTW_ESTIMATE); });
 
   std::mt19937_64 engine(spec.seed);
   for (std::size_t m = 0; m <= n / 2; ++m) {
@@ -156,7 +126,7 @@ RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
     spectrum[m][0] = amplitude * re;
     spectrum[m][1] = amplitude * im;
   }
-  fftw_execute(plan.plan);
+  plan.execute();
 
   // Scale so that the sample standard deviation of the stationary profile over the grid points
   // covering [0, x_max] (j = 0 .. last) is exactly std_dev: sqrt(sum (r_j - mean)^2 / count),

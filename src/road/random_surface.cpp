@@ -12,39 +12,10 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
-#include "core/fftw_planner_lock.hpp"
+#include "core/fftw_plan.hpp"
 
 namespace rollnoise {
 namespace {
-
-struct FftwPlan {
-  fftw_plan plan = nullptr;
-  FftwPlan(int n0, int n1, fftw_complex* in, double* out) {
-    const std::lock_guard lock(fftw_planner_mutex());
-    // FFTW_ESTIMATE: no timing-dependent plan choice, so the result does not vary run to run.
-    plan = fftw_plan_dft_c2r_2d(n0, n1, in, out, FFTW_ESTIMATE);
-  }
-  ~FftwPlan() {
-    const std::lock_guard lock(fftw_planner_mutex());
-    if (plan) fftw_destroy_plan(plan);
-  }
-  FftwPlan(const FftwPlan&) = delete;
-  FftwPlan& operator=(const FftwPlan&) = delete;
-};
-
-// Smallest n' >= n of the form 2^a 3^b 5^c, sizes for which FFTW is fast.
-std::size_t fft_friendly_size(std::size_t n) {
-  std::size_t best = std::size_t{1};
-  while (best < n) best *= 2;  // a power of two always qualifies
-  for (std::size_t p5 = 1; p5 < 2 * n; p5 *= 5) {
-    for (std::size_t p35 = p5; p35 < 2 * n; p35 *= 3) {
-      std::size_t candidate = p35;
-      while (candidate < n) candidate *= 2;
-      best = std::min(best, candidate);
-    }
-  }
-  return best;
-}
 
 [[noreturn]] void bad(const char* key, const std::string& problem) {
   throw InputError("", key, problem);
@@ -150,8 +121,9 @@ RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
   data_.reset(fftw_alloc_real(n0 * stride_));
   if (!data_) throw std::bad_alloc();
   auto* spectrum = reinterpret_cast<fftw_complex*>(data_.get());
-  const FftwPlan plan(static_cast<int>(n0), static_cast<int>(n1), spectrum, data_.get());
-  if (!plan.plan) throw std::runtime_error("RandomSurface: FFTW could not plan the synthesis");
+  const FftwPlan plan([&] {
+    return fftw_plan_dft_c2r_2d(static_cast<int>(n0), static_cast<int>(n1), spectrum, data_.get(), FFTW_ESTIMATE);
+  });
 
   // Random complex amplitudes: a complex normal times the square root of the spectral density
   // at wavenumber (nx, ny) = (i'/Px, k/Py), i' the signed index of row i. The mean and the
@@ -190,7 +162,7 @@ RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
     spectrum[(n0 - i) * half][0] = spectrum[i * half][0];
     spectrum[(n0 - i) * half][1] = -spectrum[i * half][1];
   }
-  fftw_execute(plan.plan);
+  plan.execute();
 
   // Scale so that the standard deviation over the stored grid (every point of [0, end_x()] x
   // [-half_extent_y(), half_extent_y()]) is exactly std_dev, population form, mean not removed:

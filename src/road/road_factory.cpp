@@ -15,6 +15,7 @@
 #include "road/file_road.hpp"
 #include "road/flat_road.hpp"
 #include "road/random_road.hpp"
+#include "road/random_spectrum_keys.hpp"
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
 #include "road/cleat_road.hpp"
@@ -52,37 +53,7 @@ std::unique_ptr<RoadProfile> make_sine(const ConfigTable& road) {
 
 std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) {
   RandomRoadSpec spec;
-  spec.std_dev = road.positive("std_dev");
-  const bool has_lc = road.contains("correlation_length");
-  const bool has_min = road.contains("min_wavelength");
-  const bool has_max = road.contains("max_wavelength");
-  if (has_lc && (has_min || has_max)) {
-    road.fail("correlation_length",
-              "give either correlation_length (Gaussian autocorrelation) or min_wavelength and "
-              "max_wavelength (band-limited spectrum), not both");
-  }
-  if (has_lc) {
-    spec.spectrum = RandomRoadSpec::Spectrum::gaussian;
-    spec.correlation_length = road.positive("correlation_length");
-  } else if (has_min || has_max) {
-    if (!has_min) road.fail("min_wavelength", "is required with max_wavelength (band-limited spectrum)");
-    if (!has_max) road.fail("max_wavelength", "is required with min_wavelength (band-limited spectrum)");
-    spec.spectrum = RandomRoadSpec::Spectrum::band;
-    spec.min_wavelength = road.positive("min_wavelength");
-    spec.max_wavelength = road.positive("max_wavelength");
-    if (!(spec.min_wavelength < spec.max_wavelength)) {
-      road.fail("min_wavelength", "must be less than max_wavelength (got " +
-                                      format_number(spec.min_wavelength) + " and " +
-                                      format_number(spec.max_wavelength) + ")");
-    }
-  } else {
-    road.fail("correlation_length",
-              "is required, or else min_wavelength and max_wavelength (band-limited spectrum)");
-  }
-  if (road.contains("sample_spacing")) spec.sample_spacing = road.positive("sample_spacing");
-  if (road.contains("lead_in")) spec.lead_in = road.non_negative("lead_in");
-  spec.seed = static_cast<std::uint64_t>(
-      road.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
+  read_random_spectrum_keys(road, spec);
   // A fixed stretch of road, so that runs of different duration on the same case see the same
   // profile; a run longer than `length` gets a longer (and so different) road.
   spec.x_max = std::max(x_max, road.positive("length", 100.0));
