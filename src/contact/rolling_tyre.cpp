@@ -146,9 +146,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   // discretisation itself. Both history engines see the same split.
   const Eigen::MatrixXd g0_symmetric = 0.5 * (g0 + g0.transpose());
   const Eigen::MatrixXd g0_skew = g0 - g0_symmetric;
-  LcpSolver lcp(nonlinear ? Eigen::MatrixXd::Identity(1, 1) : g0_symmetric);
+  // One of the two per-step solvers: the exact LCP for linear treads, KINSOL for nonlinear ones.
+  std::unique_ptr<LcpSolver> lcp;
   std::unique_ptr<NonlinearTreadContact> springs;
   if (nonlinear) springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  else lcp = std::make_unique<LcpSolver>(g0_symmetric);
 
   TyreContactTrace trace;
   trace.engine = engine->name();
@@ -198,8 +200,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     // the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0 && !springs) {
-      const std::vector<char>& last = lcp.active_flags();
+    if (n > 0 && lcp) {
+      const std::vector<char>& last = lcp->active_flags();
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -210,9 +212,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
                                 last[static_cast<std::size_t>(ahead)] != 0;
         shift += shifted_in != penetrates;
       }
-      if (shift < stay) lcp.relabel_active_set(shift_back);
+      if (shift < stay) lcp->relabel_active_set(shift_back);
     }
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp.solve(q);
+    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q);
     deformation.noalias() = g0_symmetric * force;
     deformation += u0;
     if (springs) deformation += springs->compression();
@@ -247,7 +249,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
                                                               previous_deformation);
     previous_force = force;
     previous_deformation = deformation;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp.iterations();
+    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->iterations();
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
