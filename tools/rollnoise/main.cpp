@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.hpp"
+#include "analyse_command.hpp"
 #include "simulate_command.hpp"
 
 namespace {
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
 
   rollnoise::SimulateOptions simulate;
   CLI::App* simulate_cmd = rollnoise::add_simulate_command(app, simulate);
+  rollnoise::AnalyseOptions analyse;
+  CLI::App* analyse_cmd = rollnoise::add_analyse_command(app, analyse);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -37,7 +40,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -49,6 +52,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (simulate_cmd->parsed()) return rollnoise::run_simulate(simulate);
+    if (analyse_cmd->parsed()) return rollnoise::run_analyse(analyse);
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;

@@ -1,0 +1,104 @@
+#include "acoustics/welch_psd.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <new>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <fftw3.h>
+
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/fftw_plan.hpp"
+
+namespace rollnoise {
+namespace {
+
+struct FftwFree {
+  void operator()(void* p) const noexcept { fftw_free(p); }
+};
+
+}  // namespace
+
+PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate, std::size_t segment_length) {
+  if (!(sample_rate > 0.0) || !std::isfinite(sample_rate)) {
+    throw InputError("", "sample_rate", "must be a finite number > 0 (got " + format_number(sample_rate) + ")");
+  }
+  const std::size_t n = segment_length;
+  if (n < 8 || n % 2 != 0) {
+    throw InputError("", "segment_length", "must be even and >= 8 (got " + std::to_string(n) + ")");
+  }
+  if (n > signal.size()) {
+    throw InputError("", "segment_length",
+                     "is longer than the signal (" + std::to_string(n) + " > " + std::to_string(signal.size()) +
+                         " samples)");
+  }
+  if (n > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw InputError("", "segment_length", "is too large for the FFT (" + std::to_string(n) + ")");
+  }
+
+  const std::size_t hop = n / 2;  // 50 % overlap
+  const std::size_t segments = 1 + (signal.size() - n) / hop;
+
+  std::vector<double> window(n);
+  double window_power = 0.0;  // Σ w²
+  for (std::size_t i = 0; i < n; ++i) {
+    // Periodic (DFT-even) Hann: its 50 %-overlapped copies sum to a constant.
+    window[i] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n)));
+    window_power += window[i] * window[i];
+  }
+
+  const std::size_t bins = n / 2 + 1;
+  std::unique_ptr<double[], FftwFree> in(fftw_alloc_real(n));
+  std::unique_ptr<fftw_complex[], FftwFree> out(fftw_alloc_complex(bins));
+  if (!in || !out) throw std::bad_alloc();
+  const FftwPlan plan([&] { return fftw_plan_dft_r2c_1d(static_cast<int>(n), in.get(), out.get(), FFTW_ESTIMATE); });
+
+  PowerSpectralDensity psd;
+  psd.sample_rate = sample_rate;
+  psd.segment_length = n;
+  psd.segments = segments;
+  psd.density.assign(bins, 0.0);
+  for (std::size_t m = 0; m < segments; ++m) {
+    const double* x = signal.data() + m * hop;
+    for (std::size_t i = 0; i < n; ++i) in[i] = window[i] * x[i];
+    plan.execute();
+    for (std::size_t k = 0; k < bins; ++k) psd.density[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+  }
+  // One-sided density: the power of the negative frequencies folded onto the positive ones
+  // (factor 2), except at DC and Nyquist which have no mirror.
+  const double scale = 1.0 / (sample_rate * window_power * static_cast<double>(segments));
+  for (std::size_t k = 0; k < bins; ++k) {
+    const bool unpaired = k == 0 || k == bins - 1;
+    psd.density[k] *= (unpaired ? 1.0 : 2.0) * scale;
+  }
+  return psd;
+}
+
+double integrate_psd(const PowerSpectralDensity& psd, double f_low, double f_high) {
+  if (!(f_low <= f_high)) {
+    throw std::invalid_argument("integrate_psd: need f_low <= f_high (got " + format_number(f_low) + ", " +
+                                format_number(f_high) + ")");
+  }
+  const double df = psd.resolution();
+  double sum = 0.0;
+  for (std::size_t k = 0; k < psd.density.size(); ++k) {
+    const double lo = (static_cast<double>(k) - 0.5) * df;
+    const double hi = (static_cast<double>(k) + 0.5) * df;
+    const double overlap = std::min(hi, f_high) - std::max(lo, f_low);
+    if (overlap > 0.0) sum += psd.density[k] * overlap;
+  }
+  return sum;
+}
+
+double total_power(const PowerSpectralDensity& psd) {
+  double sum = 0.0;
+  for (double p : psd.density) sum += p;
+  return sum * psd.resolution();
+}
+
+}  // namespace rollnoise
