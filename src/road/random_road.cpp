@@ -14,62 +14,31 @@
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
 #include "core/fftw_plan.hpp"
+#include "road/random_spectrum.hpp"
 
 namespace rollnoise {
 namespace {
+
+[[noreturn]] void throw_bad(const char* key, const std::string& problem) {
+  throw InputError("", key, problem);  // the factory names the file and the section
+}
 
 struct FftwFree {
   void operator()(void* p) const noexcept { fftw_free(p); }
 };
 
-[[noreturn]] void bad(const char* key, const std::string& problem) {
-  throw InputError("", key, problem);
-}
-
-double require_positive(const char* key, double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    bad(key, "must be a finite number > 0 (got " + format_number(value) + ")");
-  }
-  return value;
-}
-
 }  // namespace
 
 RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
-  using Spectrum = RandomRoadSpec::Spectrum;
   if (!std::isfinite(spec.x_max)) throw std::invalid_argument("RandomRoad: x_max must be finite");
-  const double std_dev = require_positive("std_dev", spec.std_dev);
-  const bool gaussian = spec.spectrum == Spectrum::gaussian;
-
+  const SpectrumScales scales = check_spectrum_scales(spec, 16.0);
+  const double std_dev = scales.std_dev;
+  const bool gaussian = scales.gaussian;
   // The longest and shortest scales of the spectrum set the defaults and the grid.
-  double shortest = 0.0;
-  double longest = 0.0;
-  if (gaussian) {
-    shortest = longest = require_positive("correlation_length", spec.correlation_length);
-  } else {
-    shortest = require_positive("min_wavelength", spec.min_wavelength);
-    longest = require_positive("max_wavelength", spec.max_wavelength);
-    if (!(shortest < longest)) {
-      bad("min_wavelength", "must be less than max_wavelength (got " + format_number(shortest) +
-                                " and " + format_number(longest) + ")");
-    }
-  }
-
-  spacing_ = require_positive("sample_spacing", spec.sample_spacing.value_or(shortest / 16.0));
-  // The grid must resolve the spectrum: the band up to its Nyquist wavenumber 1/(2 spacing);
-  // for the Gaussian spectrum, spacing <= lc/2 leaves out a fraction below exp(-pi^2) ~ 5e-5
-  // of the spectral density peak.
-  if (spacing_ > shortest / 2.0) {
-    bad("sample_spacing", std::string("must be at most ") +
-                              (gaussian ? "correlation_length / 2" : "min_wavelength / 2") +
-                              " to resolve the spectrum (got " + format_number(spacing_) +
-                              ", limit " + format_number(shortest / 2.0) + ")");
-  }
-
-  lead_in_ = spec.lead_in.value_or(2.0 * longest);
-  if (!(lead_in_ >= 0.0) || !std::isfinite(lead_in_)) {
-    bad("lead_in", "must be a finite number >= 0 (got " + format_number(lead_in_) + ")");
-  }
+  const double shortest = scales.shortest;
+  const double longest = scales.longest;
+  spacing_ = scales.spacing;
+  lead_in_ = scales.lead_in;
 
   // Length of the periodic synthesis grid. Beyond [0, x_max] it keeps a margin, so that the
   // periodic wrap does not correlate the end of the run with its start (Gaussian: R(5 lc) =
@@ -85,7 +54,7 @@ RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
   // Compared as doubles: an absurd ratio must not overflow the conversion to an integer.
   const double needed = std::ceil(period / spacing_);
   if (!(needed <= static_cast<double>(max_grid_size))) {
-    bad("sample_spacing", "the road needs " + format_number(needed) +
+    throw_bad("sample_spacing", "the road needs " + format_number(needed) +
                               " samples, more than the limit of 2^26; use a larger "
                               "sample_spacing or a shorter run");
   }

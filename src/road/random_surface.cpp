@@ -13,19 +13,13 @@
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
 #include "core/fftw_plan.hpp"
+#include "road/random_spectrum.hpp"
 
 namespace rollnoise {
 namespace {
 
-[[noreturn]] void bad(const char* key, const std::string& problem) {
-  throw InputError("", key, problem);
-}
-
-double require_positive(const char* key, double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    bad(key, "must be a finite number > 0 (got " + format_number(value) + ")");
-  }
-  return value;
+[[noreturn]] void throw_bad(const char* key, const std::string& problem) {
+  throw InputError("", key, problem);  // the factory names the file and the section
 }
 
 // Points within this fraction of a sample spacing outside the grid are taken as on its edge, so
@@ -37,46 +31,21 @@ constexpr double edge_slack = 1e-9;
 void RandomSurface::FftwFree::operator()(double* p) const noexcept { fftw_free(p); }
 
 RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
-  using Spectrum = RandomSurfaceSpec::Spectrum;
   if (!std::isfinite(spec.x_max)) throw std::invalid_argument("RandomSurface: x_max must be finite");
   if (!(spec.half_width >= 0.0) || !std::isfinite(spec.half_width)) {
     throw std::invalid_argument("RandomSurface: half_width must be finite and >= 0");
   }
-  const double std_dev = require_positive("std_dev", spec.std_dev);
-  const bool gaussian = spec.spectrum == Spectrum::gaussian;
-
-  double shortest = 0.0;
-  double longest = 0.0;
-  if (gaussian) {
-    shortest = longest = require_positive("correlation_length", spec.correlation_length);
-  } else {
-    shortest = require_positive("min_wavelength", spec.min_wavelength);
-    longest = require_positive("max_wavelength", spec.max_wavelength);
-    if (!(shortest < longest)) {
-      bad("min_wavelength", "must be less than max_wavelength (got " + format_number(shortest) +
-                                " and " + format_number(longest) + ")");
-    }
-  }
-
-  spacing_ = require_positive("sample_spacing", spec.sample_spacing.value_or(shortest / 8.0));
-  // The grid must resolve the spectrum: the band up to the Nyquist wavenumber 1/(2 spacing) on
-  // each axis (the disc |n| <= 1/min_wavelength fits in the Nyquist square); for the Gaussian,
-  // spacing <= lc/2 leaves out spectral density below exp(-pi^2) ~ 5e-5 of its peak.
-  if (spacing_ > shortest / 2.0) {
-    bad("sample_spacing", std::string("must be at most ") +
-                              (gaussian ? "correlation_length / 2" : "min_wavelength / 2") +
-                              " to resolve the spectrum (got " + format_number(spacing_) +
-                              ", limit " + format_number(shortest / 2.0) + ")");
-  }
-
-  lead_in_ = spec.lead_in.value_or(2.0 * longest);
-  if (!(lead_in_ >= 0.0) || !std::isfinite(lead_in_)) {
-    bad("lead_in", "must be a finite number >= 0 (got " + format_number(lead_in_) + ")");
-  }
-  const double length = require_positive("length", spec.length);
-  const double width = require_positive("width", spec.width);
+  const SpectrumScales scales = check_spectrum_scales(spec, 8.0);
+  const double std_dev = scales.std_dev;
+  const bool gaussian = scales.gaussian;
+  const double shortest = scales.shortest;
+  const double longest = scales.longest;
+  spacing_ = scales.spacing;
+  lead_in_ = scales.lead_in;
+  const double length = require_positive_scale("length", spec.length);
+  const double width = require_positive_scale("width", spec.width);
   if (spec.half_width > width / 2.0) {
-    bad("width", "the surface is " + format_number(width) +
+    throw_bad("width", "the surface is " + format_number(width) +
                      " m wide (y from -width/2 to width/2), but the tyre's contact grid reaches "
                      "|y| = " + format_number(spec.half_width) +
                      " m; set width to at least " + format_number(2.0 * spec.half_width) + " m");
@@ -98,7 +67,7 @@ RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
   const double needed_y = std::max(2.0 * half_y_d + margin_samples, min_samples);
   const double limit = static_cast<double>(max_grid_points);
   const auto too_big = [&](double points) {
-    bad("sample_spacing", "the surface needs a synthesis grid of " + format_number(points) +
+    throw_bad("sample_spacing", "the surface needs a synthesis grid of " + format_number(points) +
                               " samples, more than the limit of 2^26; use a larger "
                               "sample_spacing, a shorter length or run, or a smaller width");
   };

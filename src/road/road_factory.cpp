@@ -15,7 +15,7 @@
 #include "road/file_road.hpp"
 #include "road/flat_road.hpp"
 #include "road/random_road.hpp"
-#include "road/random_spectrum_keys.hpp"
+#include "road/random_spectrum.hpp"
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
 #include "road/cleat_road.hpp"

@@ -15,7 +15,7 @@
 #include "core/error.hpp"
 #include "road/height_map_surface.hpp"
 #include "road/random_surface.hpp"
-#include "road/random_spectrum_keys.hpp"
+#include "road/random_spectrum.hpp"
 
 namespace rollnoise {
 
