@@ -17,6 +17,8 @@
 
 namespace rollnoise {
 
+class RealFftBatch;
+
 class ModalHistoryEngine : public HistoryEngine {
  public:
   // `preload`: the steady force on each window point for all t < 0 (steady rolling).
@@ -37,9 +39,8 @@ class ModalHistoryEngine : public HistoryEngine {
   // f_mn = Σ_q sin(k_n y_q) e^{−i k_m x_q} F_q into modal_force_.
   void project(const Eigen::Ref<const Eigen::VectorXd>& force);
 
-  struct Fft;
   const RollingPlate& plate_;
-  std::unique_ptr<Fft> fft_;
+  std::unique_ptr<RealFftBatch> fft_;
   std::vector<Eigen::Matrix2cd> step_;      // Φ̃ per mode
   std::vector<Eigen::Vector2cd> input_;     // Γ̃ per mode
   std::vector<Eigen::RowVector2cd> output_; // c·Φ̃ per mode: history from the previous state

@@ -1,46 +1,15 @@
 #include "response/surface_response.hpp"
 
-#include <fftw3.h>
-
 #include <stdexcept>
 
 #include "contact/modal_history_engine.hpp"
-#include "core/fftw_planner_lock.hpp"
+#include "core/real_fft_batch.hpp"
 
 namespace rollnoise {
-// N complex-to-real transforms of length Nθ (modal orders → positions around).
-struct SurfaceResponse::Fft {
-  int length, count;
-  fftw_complex* spectrum = nullptr;
-  double* field = nullptr;
-  fftw_plan plan = nullptr;
-  Fft(int n, int howmany) : length(n), count(howmany) {
-    const int bins = n / 2 + 1;
-    spectrum = fftw_alloc_complex(static_cast<std::size_t>(bins) * howmany);
-    field = fftw_alloc_real(static_cast<std::size_t>(n) * howmany);
-    if (!spectrum || !field) throw std::bad_alloc();
-    const std::lock_guard lock(fftw_planner_mutex());
-    plan = fftw_plan_many_dft_c2r(1, &n, howmany, spectrum, nullptr, 1, bins, field, nullptr, 1, n,
-                                  FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
-    if (!plan) throw std::runtime_error("FFTW could not plan the surface transforms");
-  }
-  ~Fft() {
-    const std::lock_guard lock(fftw_planner_mutex());
-    if (plan) fftw_destroy_plan(plan);
-    fftw_free(spectrum);
-    fftw_free(field);
-  }
-  Fft(const Fft&) = delete;
-  Fft& operator=(const Fft&) = delete;
-  std::complex<double>& bin(int n, int m) {
-    return reinterpret_cast<std::complex<double>&>(spectrum[static_cast<std::size_t>(n) * (length / 2 + 1) + m]);
-  }
-};
-
 SurfaceResponse::SurfaceResponse(const RollingPlate& plate, const Eigen::VectorXd& preload, int lateral_points)
     : plate_(plate),
       modes_(std::make_unique<ModalHistoryEngine>(plate, preload)),
-      fft_(std::make_unique<Fft>(plate.grid().circumferential, plate.lateral_modes())) {
+      fft_(std::make_unique<RealFftBatch>(plate.grid().circumferential, plate.lateral_modes())) {
   if (lateral_points < 1) throw std::invalid_argument("surface response: lateral_points must be >= 1");
   shapes_.resize(lateral_points, plate.lateral_modes());
   for (int j = 0; j < lateral_points; ++j) {
@@ -62,7 +31,7 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
   const auto& states = modes_->states();
   const int big_n = plate_.grid().circumferential;
   const int bins = big_n / 2 + 1;
-  Fft& fft = *fft_;
+  RealFftBatch& fft = *fft_;
   for (int component = 0; component < 2; ++component) {
     for (int n = 1; n <= plate_.lateral_modes(); ++n) {
       for (int m = 0; m < bins; ++m) {
@@ -73,9 +42,9 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
         fft.bin(n - 1, m) = value;
       }
     }
-    fftw_execute(fft.plan);
+    fft.backward();
     for (int n = 0; n < plate_.lateral_modes(); ++n)
-      for (int g = 0; g < big_n; ++g) around_(n, g) = fft.field[static_cast<std::size_t>(n) * big_n + g];
+      for (int g = 0; g < big_n; ++g) around_(n, g) = fft.at(n, g);
     Eigen::MatrixXd& out = component == 0 ? displacement : velocity;
     out.noalias() = shapes_ * around_;
     out /= plate_.modal_mass();

@@ -16,6 +16,7 @@
 namespace rollnoise {
 
 class ModalHistoryEngine;
+class RealFftBatch;
 
 class SurfaceResponse {
  public:
@@ -34,10 +35,9 @@ class SurfaceResponse {
   double lateral_position(int j) const;
 
  private:
-  struct Fft;
   const RollingPlate& plate_;
   std::unique_ptr<ModalHistoryEngine> modes_;
-  std::unique_ptr<Fft> fft_;
+  std::unique_ptr<RealFftBatch> fft_;
   Eigen::MatrixXd shapes_;  // sin(k_n y_j): Ny × N
   Eigen::MatrixXd around_;  // N × Nθ scratch
 };
