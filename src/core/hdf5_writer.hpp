@@ -35,7 +35,7 @@ class Hdf5Writer {
   void attribute(const std::string& object, const std::string& name, const std::vector<double>& values);
 
   // A 3-D float dataset [count][rows][cols] written one [rows][cols] slice at a time, chunked
-  // and compressed by slice, for fields too large to keep in memory.
+  // by slice, for fields too large to keep in memory.
   class SliceStream {
    public:
     ~SliceStream();
