@@ -51,6 +51,10 @@ class ConfigTable {
   std::string choice(std::string_view key, const std::vector<std::string>& allowed,
                      std::string fallback) const;
 
+  // The raw TOML node of a key (nullptr when absent), for values no typed lookup covers, such as
+  // lists of tables; the key counts as known.
+  const toml::node* raw(std::string_view key) const { return find(key); }
+
   // A nested table (TOML [section.key] or key.sub = …); std::nullopt when absent. A value that
   // is not a table is an InputError.
   std::optional<ConfigTable> subtable(std::string_view key) const;
