@@ -1,0 +1,35 @@
+#pragma once
+// Transfer functions from surface velocities to receiver pressures over a band of frequencies,
+// solved at a few anchor frequencies and interpolated between them (an equivalent-source solve
+// costs seconds per frequency on a tyre mesh; a time signal needs hundreds of bins).
+//
+// The propagation delay to each receiver, τ = |x_r − x_0|/c from a reference point x_0 on the
+// body, makes T(ω) turn through 2π every 1/τ Hz (45 Hz at 7.5 m). It is taken out before
+// interpolating, T̃ = T·e^{iωτ}, and put back after: what is left varies on the scale of the
+// body's own size, and is interpolated linearly in frequency.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "radiation/equivalent_sources.hpp"
+
+namespace rollnoise {
+
+class TransferTable {
+ public:
+  // anchors_hz: increasing, > 0. `reference`: a point on or in the body (the wheel centre).
+  TransferTable(const EquivalentSources& model, const Eigen::Matrix3Xd& receivers, std::vector<double> anchors_hz,
+                const Eigen::Vector3d& reference, double sound_speed, double regularisation = 1e-10);
+
+  // R × M at frequency f (Hz), within [first anchor, last anchor].
+  Eigen::MatrixXcd at(double frequency_hz) const;
+
+  const std::vector<double>& anchors() const noexcept { return anchors_; }
+
+ private:
+  std::vector<double> anchors_;
+  Eigen::VectorXd delay_;                  // τ per receiver, s
+  std::vector<Eigen::MatrixXcd> reduced_;  // T̃ at each anchor
+};
+
+}  // namespace rollnoise
