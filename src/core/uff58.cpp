@@ -250,6 +250,19 @@ std::optional<std::int64_t> fixed_integer(std::string_view line, const FixedFiel
   return parse_integer(text);
 }
 
+// Reads every fixed-column integer field into `values`; returns the index of the first field
+// that is not an integer, or nullopt when all are.
+template <std::size_t N>
+std::optional<std::size_t> fixed_integers(std::string_view line, const FixedField (&fields)[N],
+                                          std::int64_t (&values)[N]) {
+  for (std::size_t i = 0; i < N; ++i) {
+    const auto value = fixed_integer(line, fields[i]);
+    if (!value) return i;
+    values[i] = *value;
+  }
+  return std::nullopt;
+}
+
 int narrow_small(std::int64_t value, const Dataset& ds, std::size_t line, const std::string& where,
                  const char* name) {
   if (value < -99999 || value > 99999)
@@ -265,17 +278,9 @@ void parse_record6(std::string_view line, std::size_t number, const Dataset& ds,
       {"response node", 41, 10},  {"response direction", 51, 4},
       {"reference node", 66, 10}, {"reference direction", 76, 4}};
   std::int64_t v[8] = {};
-  bool fixed_ok = true;
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < 8; ++i) {
-    const auto value = fixed_integer(line, fields[i]);
-    if (!value) {
-      fixed_ok = false;
-      bad = i;
-      break;
-    }
-    v[i] = *value;
-  }
+  const std::optional<std::size_t> first_bad = fixed_integers(line, fields, v);
+  const bool fixed_ok = !first_bad;
+  const std::size_t bad = first_bad.value_or(0);
   if (fixed_ok) {
     r.response_entity = text_field(column(line, 31, 10));
     r.reference_entity = text_field(column(line, 56, 10));
@@ -437,17 +442,9 @@ void parse_axis(std::string_view line, std::size_t number, int record, const Dat
                                           {"temperature units exponent", 20, 5}};
   const std::string where = "record " + std::to_string(record);
   std::int64_t v[4] = {};
-  bool fixed_ok = true;
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < 4; ++i) {
-    const auto value = fixed_integer(line, fields[i]);
-    if (!value) {
-      fixed_ok = false;
-      bad = i;
-      break;
-    }
-    v[i] = *value;
-  }
+  const std::optional<std::size_t> first_bad = fixed_integers(line, fields, v);
+  const bool fixed_ok = !first_bad;
+  const std::size_t bad = first_bad.value_or(0);
   if (fixed_ok) {
     axis.label = text_field(column(line, 26, 20));
     // The units label is the last field: take the rest of the line, so a multi-byte character
