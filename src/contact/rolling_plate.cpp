@@ -80,23 +80,24 @@ DiscreteKernel RollingPlate::sheared_kernel(std::size_t lags) const {
   DiscreteKernel kernel;
   kernel.time_step = time_step_;
   kernel.discretisation = Discretisation::step;
-  const Eigen::Index p = grid_.points();
-  const double dt = time_step_;
-  std::vector<std::complex<double>> coefficients(oscillators_.size());
-  for (std::size_t k = 0; k < lags; ++k) {
-    // H̃_mn[k] = ∫_{kΔt}^{(k+1)Δt} e^{iω_m τ} h_mn(τ) dτ in closed form.
-    const double t0 = static_cast<double>(k) * dt;
-    for (int n = 1; n <= lateral_modes_; ++n)
-      for (int m = 0; m <= orders_; ++m) {
-        const auto r = static_cast<std::size_t>(mode_index(m, n));
-        coefficients[r] = oscillators_[r].phase_integral(passing_rate(m), t0, t0 + dt);
-      }
-    Eigen::MatrixXd lag = Eigen::MatrixXd::Zero(p, p);
-    add_modal_sum(coefficients, lag);
-    kernel.lags.push_back(std::move(lag));
-  }
+  for (std::size_t k = 0; k < lags; ++k) kernel.lags.push_back(sheared_lag(k));
   kernel.total = rolling_compliance();
   return kernel;
+}
+
+Eigen::MatrixXd RollingPlate::sheared_lag(std::size_t k) const {
+  // H̃_mn[k] = ∫_{kΔt}^{(k+1)Δt} e^{iω_m τ} h_mn(τ) dτ in closed form.
+  const double dt = time_step_;
+  const double t0 = static_cast<double>(k) * dt;
+  std::vector<std::complex<double>> coefficients(oscillators_.size());
+  for (int n = 1; n <= lateral_modes_; ++n)
+    for (int m = 0; m <= orders_; ++m) {
+      const auto r = static_cast<std::size_t>(mode_index(m, n));
+      coefficients[r] = oscillators_[r].phase_integral(passing_rate(m), t0, t0 + dt);
+    }
+  Eigen::MatrixXd lag = Eigen::MatrixXd::Zero(grid_.points(), grid_.points());
+  add_modal_sum(coefficients, lag);
+  return lag;
 }
 
 Eigen::MatrixXd RollingPlate::rolling_compliance() const {

@@ -57,6 +57,8 @@ class RollingPlate {
   // engine is checked against an independent evaluation), and its total over all lags, the
   // steady-rolling compliance. The local (tread) compliance is not included.
   DiscreteKernel sheared_kernel(std::size_t lags) const;
+  // G_fixed[k] alone (P × P), without the all-lag total that sheared_kernel() also computes.
+  Eigen::MatrixXd sheared_lag(std::size_t k) const;
   // Σ_k G_fixed[k]: the structural compliance of steady rolling (P × P).
   Eigen::MatrixXd rolling_compliance() const;
 

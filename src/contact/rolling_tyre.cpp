@@ -132,7 +132,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     g0 = kernel->lags[0];
     engine = std::make_unique<DirectHistoryEngine>(kernel, samples, steady.force);
   } else if (settings.history == HistoryKind::modal || settings.history == HistoryKind::automatic) {
-    g0 = plate.sheared_kernel(1).lags[0] + local_compliance;
+    g0 = plate.sheared_lag(0) + local_compliance;
     engine = std::make_unique<ModalHistoryEngine>(plate, steady.force);
   } else {
     throw InputError("", "[rolling] history",

@@ -52,7 +52,7 @@ TEST(SurfaceResponse, MatchesTheContactSolutionAtTheWindow) {
 
   // The contact solver's belt displacement: its surface position less the geometry and the
   // tread, with G[0]'s skew part taken at the previous step's force (rolling_tyre.cpp).
-  const Eigen::MatrixXd g0 = rolling.sheared_kernel(1).lags[0];
+  const Eigen::MatrixXd g0 = rolling.sheared_lag(0);
   const Eigen::MatrixXd skew = 0.5 * (g0 - g0.transpose());
   const Eigen::VectorXd h = grid.undeformed_gap();
   SurfaceResponse response(rolling, t.steady_force, grid.lateral);

@@ -26,7 +26,7 @@ namespace rollnoise {
 namespace fs = std::filesystem;
 namespace {
 
-Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& grid, const ConfigTable& tyre) {
+Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& grid) {
   switch (tread.type) {
     case TreadSettings::Type::winkler:
       return winkler_compliance(grid.points(), grid.dx(), grid.dy(), tread.stiffness_per_area);
@@ -35,7 +35,6 @@ Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& gri
     case TreadSettings::Type::nonlinear:
       break;  // no linear local part: the springs act in the contact solve
   }
-  (void)tyre;
   return Eigen::MatrixXd::Zero(grid.points(), grid.points());
 }
 
@@ -235,7 +234,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   } catch (const std::invalid_argument& error) {
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
-  const Eigen::MatrixXd local = tread_compliance(model.tread, grid, tyre);
+  const Eigen::MatrixXd local = tread_compliance(model.tread, grid);
   const double travel = settings.speed * settings.duration;
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
