@@ -47,17 +47,20 @@ nlohmann::json summarise_contact(const ContactTrace& trace) {
                       {"max_gap_m", trace.gap.col(i).maxCoeff()},
                       {"static_force_N", trace.preload_force(i)}});
   }
-  const auto& it = trace.lcp_iterations;
-  long total = 0;
-  for (int v : it) total += v;
   return {{"points", points},
           {"min_gap_m", trace.gap.minCoeff()},
           {"indentation_m", trace.indentation},
           {"history_engine", trace.engine},
-          {"lcp_iterations",
-           {{"total", total},
-            {"max_per_step", it.empty() ? 0 : *std::max_element(it.begin(), it.end())},
-            {"mean_per_step", it.empty() ? 0.0 : static_cast<double>(total) / static_cast<double>(it.size())}}}};
+          {"lcp_iterations", summarise_iterations(trace.lcp_iterations)}};
+}
+
+nlohmann::json summarise_iterations(const std::vector<int>& per_step) {
+  long total = 0;
+  for (int v : per_step) total += v;
+  return {{"total", total},
+          {"max_per_step", per_step.empty() ? 0 : *std::max_element(per_step.begin(), per_step.end())},
+          {"mean_per_step",
+           per_step.empty() ? 0.0 : static_cast<double>(total) / static_cast<double>(per_step.size())}};
 }
 
 void plot_contact(const std::filesystem::path& dir, const ContactTrace& trace, const std::string& title) {

@@ -2,6 +2,7 @@
 // The outputs of a point-model run: contact.csv, summary.json and a plot (ARCHITECTURE.md,
 // "Outputs").
 #include <filesystem>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,9 @@ struct ContactTrace;
 
 // contact.csv: time, then per point i (from 1) road_i, displacement_i, force_i.
 void write_contact_csv(const std::filesystem::path& path, const ContactTrace& trace);
+
+// summary.json's "lcp_iterations": total, max and mean per step of the solver's changes.
+nlohmann::json summarise_iterations(const std::vector<int>& per_step);
 
 // Per-point and overall figures for summary.json: max and mean force, fraction of time in
 // contact, minimum gap, LCP iterations.

@@ -19,6 +19,7 @@
 #include "greens/plate_factory.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
+#include "point_contact_output.hpp"
 #include "core/hdf5_writer.hpp"
 #include "response/surface_response.hpp"
 
@@ -271,12 +272,6 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   }
 
   const double mean_power = trace.input_power.mean();
-  long lcp_total = 0;
-  int lcp_max = 0;
-  for (int v : trace.lcp_iterations) {
-    lcp_total += v;
-    lcp_max = std::max(lcp_max, v);
-  }
   nlohmann::json summary;
   summary["case"] = file.name();
   summary["model"] = "plate";
@@ -294,9 +289,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["steady_rolling_resistance_N"] = trace.steady_rolling_resistance;
   summary["indentation_m"] = trace.indentation;
   summary["history_engine"] = trace.engine;
-  summary["lcp_iterations"] = {{"total", lcp_total},
-                               {"max_per_step", lcp_max},
-                               {"mean_per_step", static_cast<double>(lcp_total) / static_cast<double>(trace.lcp_iterations.size())}};
+  summary["lcp_iterations"] = summarise_iterations(trace.lcp_iterations);
   summary["contact_matrix_skewness"] = trace.contact_matrix_skewness;
   summary["grid"] = {{"points_circumferential", grid.circumferential},
                      {"points_lateral", grid.lateral},
