@@ -4,7 +4,6 @@
 #include <numbers>
 #include <stdexcept>
 
-#include <Eigen/SVD>
 
 namespace rollnoise {
 namespace {
@@ -73,27 +72,82 @@ Eigen::MatrixXcd EquivalentSources::pressure_matrix(double omega, const Eigen::M
   return p;
 }
 
-// Tikhonov-regularised pseudo-inverse by the SVD: Σ σ/(σ² + λ²σ_max²) v uᴴ. Equivalent-source
-// systems are ill-conditioned by nature (sources deep inside radiate nearly alike); the
-// regularisation keeps the strengths bounded without changing a well-resolved field.
-Eigen::MatrixXcd EquivalentSources::pseudo_inverse(const Eigen::MatrixXcd& v, double regularisation) const {
-  const Eigen::BDCSVD<Eigen::MatrixXcd> svd(v, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Eigen::VectorXd& sigma = svd.singularValues();
-  const double lambda = regularisation * sigma(0);
-  const Eigen::VectorXd filtered = sigma.array() / (sigma.array().square() + lambda * lambda);
-  return svd.matrixV() * filtered.asDiagonal() * svd.matrixU().adjoint();
+EquivalentSourceSolve::EquivalentSourceSolve(const Eigen::MatrixXcd& velocity_matrix, double lambda)
+    : surface_points_(velocity_matrix.rows()), source_count_(velocity_matrix.cols()) {
+  Eigen::MatrixXcd augmented(surface_points_ + source_count_, source_count_);
+  augmented.topRows(surface_points_) = velocity_matrix;
+  augmented.bottomRows(source_count_) = Eigen::MatrixXcd::Identity(source_count_, source_count_) * lambda;
+  qr_.compute(augmented);
+}
+
+// q = R⁻¹ Qᴴ [v; 0]: the first Ns rows of Qᴴ[v; 0], then back substitution.
+Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& normal_velocities) const {
+  if (normal_velocities.rows() != surface_points_)
+    throw std::invalid_argument("equivalent sources: one velocity per surface point");
+  Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(surface_points_ + source_count_, normal_velocities.cols());
+  padded.topRows(surface_points_) = normal_velocities;
+  padded.applyOnTheLeft(qr_.householderQ().adjoint());
+  return qr_.matrixQR().topLeftCorner(source_count_, source_count_).triangularView<Eigen::Upper>().solve(
+      padded.topRows(source_count_));
+}
+
+// X V⁺ = (X R⁻¹) Q₁ᴴ with Q₁ the first M rows of Q: (X V⁺)ᴴ = Q₁ (X R⁻¹)ᴴ, i.e. Q applied to
+// (X R⁻¹)ᴴ padded with zeros, first M rows. Cost: K reflector sweeps instead of M.
+Eigen::MatrixXcd EquivalentSourceSolve::transfer(const Eigen::MatrixXcd& rows_per_source) const {
+  if (rows_per_source.cols() != source_count_)
+    throw std::invalid_argument("equivalent sources: one column per source");
+  const Eigen::MatrixXcd y = qr_.matrixQR()
+                                 .topLeftCorner(source_count_, source_count_)
+                                 .triangularView<Eigen::Upper>()
+                                 .adjoint()
+                                 .solve(rows_per_source.adjoint());  // (X R⁻¹)ᴴ = R⁻ᴴ Xᴴ
+  Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(surface_points_ + source_count_, y.cols());
+  padded.topRows(source_count_) = y;
+  padded.applyOnTheLeft(qr_.householderQ());
+  return padded.topRows(surface_points_).adjoint();
+}
+
+// λ is relative to the largest singular value, estimated by power iteration on VᴴV (a few
+// per cent is plenty: it only sets the scale of a tiny regularisation).
+EquivalentSourceSolve EquivalentSources::solve(double omega, double regularisation) const {
+  if (!(omega > 0.0)) throw std::invalid_argument("equivalent sources: the frequency must be > 0");
+  const Eigen::MatrixXcd v = velocity_matrix(omega / medium_.sound_speed);
+  Eigen::VectorXcd x = Eigen::VectorXcd::Ones(v.cols());
+  double sigma_max = 0.0;
+  for (int i = 0; i < 30; ++i) {
+    const Eigen::VectorXcd y = v.adjoint() * (v * x);
+    const double norm = y.norm();
+    if (!(norm > 0.0)) break;
+    sigma_max = std::sqrt(norm / x.norm());
+    x = y / norm;
+  }
+  return EquivalentSourceSolve(v, regularisation * sigma_max);
+}
+
+Eigen::MatrixXd EquivalentSources::power_matrix(double omega) const {
+  const double k = omega / medium_.sound_speed;
+  const double scale = omega * medium_.density * k / (4.0 * std::numbers::pi);
+  const auto sinc = [](double x) { return x < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x; };
+  const Eigen::Index n = sources_.cols();
+  Eigen::MatrixXd s(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Vector3d image = mirrored(sources_.col(j));
+    for (Eigen::Index i = 0; i <= j; ++i) {
+      double value = sinc(k * (sources_.col(i) - sources_.col(j)).norm());
+      if (rigid_plane_) value += sinc(k * (sources_.col(i) - image).norm());
+      s(i, j) = s(j, i) = scale * value;
+    }
+  }
+  return s;
 }
 
 Eigen::MatrixXcd EquivalentSources::transfer(double omega, const Eigen::Matrix3Xd& receivers, double regularisation) const {
-  if (!(omega > 0.0)) throw std::invalid_argument("equivalent sources: the frequency must be > 0");
-  const double k = omega / medium_.sound_speed;
-  return pressure_matrix(omega, receivers) * pseudo_inverse(velocity_matrix(k), regularisation);
+  return solve(omega, regularisation).transfer(pressure_matrix(omega, receivers));
 }
 
 Eigen::VectorXcd EquivalentSources::strengths(double omega, const Eigen::VectorXcd& normal_velocity,
                                               double regularisation) const {
-  const double k = omega / medium_.sound_speed;
-  return pseudo_inverse(velocity_matrix(k), regularisation) * normal_velocity;
+  return solve(omega, regularisation).strengths(normal_velocity);
 }
 
 double EquivalentSources::sound_power(double omega, const Eigen::VectorXcd& normal_velocity, const Eigen::VectorXd& areas,

@@ -15,14 +15,25 @@
 
 namespace rollnoise {
 
+// τ_r = |x_r − reference|/c for each receiver (s).
+Eigen::VectorXd propagation_delays(const Eigen::Matrix3Xd& receivers, const Eigen::Vector3d& reference,
+                                   double sound_speed);
+
 class TransferTable {
  public:
   // anchors_hz: increasing, > 0. `reference`: a point on or in the body (the wheel centre).
   TransferTable(const EquivalentSources& model, const Eigen::Matrix3Xd& receivers, std::vector<double> anchors_hz,
                 const Eigen::Vector3d& reference, double sound_speed, double regularisation = 1e-10);
 
+  // From transfers already solved at the anchors (R × M each, delay not removed), for callers
+  // that solve the anchors themselves (in parallel, or with more from each solve).
+  TransferTable(std::vector<double> anchors_hz, std::vector<Eigen::MatrixXcd> transfers, Eigen::VectorXd delays);
+
   // R × M at frequency f (Hz), within [first anchor, last anchor].
   Eigen::MatrixXcd at(double frequency_hz) const;
+  // The same with the propagation delay left out, T·e^{iωτ}: the transfer to retarded time.
+  Eigen::MatrixXcd reduced_at(double frequency_hz) const;
+  const Eigen::VectorXd& delays() const noexcept { return delay_; }
 
   const std::vector<double>& anchors() const noexcept { return anchors_; }
 

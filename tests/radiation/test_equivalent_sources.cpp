@@ -61,6 +61,11 @@ TEST(EquivalentSources, PulsatingSphere) {
     const Eigen::VectorXd areas = Eigen::VectorXd::Constant(unit.cols(), 4 * kPi * a * a / static_cast<double>(unit.cols()));
     EXPECT_NEAR(model.sound_power(omega, Eigen::VectorXcd::Constant(unit.cols(), v0), areas), power, 1e-3 * power)
         << "f = " << f;
+    // The same power from the source strengths alone, ½ qᴴSq: no surface quadrature, so only
+    // the field's own error (1e-4 above) remains.
+    const Eigen::VectorXcd q = model.strengths(omega, Eigen::VectorXcd::Constant(unit.cols(), v0));
+    const double from_sources = 0.5 * (q.adjoint() * model.power_matrix(omega).cast<Complex>() * q)(0).real();
+    EXPECT_NEAR(from_sources, power, 2e-4 * power) << "f = " << f;
   }
 }
 
@@ -93,6 +98,27 @@ TEST(EquivalentSources, MonopoleOverRigidPlane) {
       const Complex expected = Complex(0.0, omega * kAir.density) * q *
                                (std::exp(Complex(0.0, -k * r1)) / (4 * kPi * r1) + std::exp(Complex(0.0, -k * r2)) / (4 * kPi * r2));
       EXPECT_LE(std::abs(p(r) - expected), 1e-4 * std::abs(expected)) << "f = " << f << ", receiver " << r;
+    }
+  }
+}
+
+// A monopole of volume velocity Q at height h over a rigid plane radiates
+// W = W₀·(1 + sin(2kh)/(2kh)) into the half-space, W₀ = ρck²|Q|²/(8π) its free-field power
+// (the image's interference; e.g. Pierce, Acoustics, §5.5).
+TEST(EquivalentSources, PowerOfAMonopoleOverARigidPlane) {
+  for (double h : {0.05, 0.3}) {
+    Eigen::Matrix3Xd source(3, 1);
+    source << 0.1, -0.2, h;
+    const Eigen::Matrix3Xd surface = (fibonacci_sphere(8) * (0.5 * h)).colwise() + source.col(0);
+    const EquivalentSources model(source, surface, fibonacci_sphere(8), true, kAir);
+    const Complex q(3e-5, -1e-5);
+    for (double f : {50.0, 500.0, 3000.0}) {
+      const double omega = 2 * kPi * f;
+      const double k = omega / kAir.sound_speed;
+      const double w0 = kAir.density * kAir.sound_speed * k * k * std::norm(q) / (8 * kPi);
+      const double expected = w0 * (1.0 + std::sin(2 * k * h) / (2 * k * h));
+      const double w = 0.5 * std::norm(q) * model.power_matrix(omega)(0, 0);
+      EXPECT_NEAR(w, expected, 1e-12 * expected) << "h = " << h << ", f = " << f;
     }
   }
 }

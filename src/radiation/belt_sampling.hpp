@@ -1,0 +1,21 @@
+#pragma once
+// From the belt's surface field to the radiating mesh: the response stage gives the radial
+// velocity on the contact grid's fine cells (Nθ around × Ny across, 512 × 20 by default), the
+// equivalent-source mesh has coarser tread cells (96 × 8). Each mesh cell takes the area-weighted
+// mean of the belt cells it overlaps, so the volume velocity Σ v·ΔS of any pattern carries over
+// exactly: at low frequency, where a tyre radiates as a monopole, that is what the sound depends
+// on; finer detail than a mesh cell radiates inefficiently and would be lost by any sampling.
+//
+// Conventions: belt cell (j, g) is centred at the angle 2πg/Nθ from the bottom of the tyre, in
+// the direction of travel, and at y_j = (j + ½)·b/Ny across the belt (SurfaceResponse); mesh tread
+// point a + Na·c is centred at the angle 2πa/Na and at y = −b/2 + (c + ½)·b/Nb
+// (tyre_surface_mesh.hpp). Both bands span the same width b.
+#include <Eigen/SparseCore>
+
+namespace rollnoise {
+
+// The sampling matrix (Na·Nb × Nθ·Ny) applied to the belt field flattened in column-major order
+// of its Ny × Nθ matrix (index j + Ny·g). std::invalid_argument for counts < 1.
+Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, int mesh_around, int mesh_across);
+
+}  // namespace rollnoise

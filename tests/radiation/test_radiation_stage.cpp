@@ -1,0 +1,152 @@
+// The radiation stage of a rolling run: belt field to mesh, then velocities over time to
+// pressures over time and sound power, checked against a monopole over the rigid road, whose
+// field and power are known exactly.
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "radiation/belt_sampling.hpp"
+#include "radiation/tyre_radiation.hpp"
+
+namespace rollnoise {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+
+TEST(BeltSampling, KeepsVolumeVelocityAndConstants) {
+  const int around = 512, across = 20, mesh_around = 96, mesh_across = 8;
+  const Eigen::SparseMatrix<double> s = belt_to_tread_matrix(around, across, mesh_around, mesh_across);
+  // Each mesh cell is a weighted mean: its weights sum to 1, so a constant field stays constant.
+  const Eigen::VectorXd ones = s * Eigen::VectorXd::Ones(around * across);
+  EXPECT_LE((ones.array() - 1.0).abs().maxCoeff(), 1e-12);
+  // Volume velocity Σ v·ΔS is kept for any field: belt cells have area A/(512·20), mesh cells
+  // A/(96·8), so Σ_mesh v/(96·8) = Σ_belt v/(512·20).
+  Eigen::VectorXd field(around * across);
+  for (int g = 0; g < around; ++g)
+    for (int j = 0; j < across; ++j)
+      field(j + across * g) = std::sin(0.37 * g) * (1.0 + 0.1 * j) + (g == 0 ? 5.0 : 0.0);
+  const Eigen::VectorXd mesh = s * field;
+  EXPECT_NEAR(mesh.sum() / (mesh_around * mesh_across), field.sum() / (around * across), 1e-12);
+  // A belt cell at the bottom (g = 0, angle 0, straddling it) lands in mesh cell a = 0, and one
+  // a quarter turn on (angle π/2, in the direction of travel) in mesh cell 24; laterally, belt
+  // row j = 0 (the edge at y = 0) in mesh row 0.
+  Eigen::VectorXd spot = Eigen::VectorXd::Zero(around * across);
+  spot(0) = 1.0;
+  const Eigen::VectorXd at_bottom = s * spot;
+  Eigen::Index where = 0;
+  at_bottom.maxCoeff(&where);
+  EXPECT_EQ(where, 0);
+  spot.setZero();
+  spot(across * (around / 4)) = 1.0;
+  (s * spot).maxCoeff(&where);
+  EXPECT_EQ(where, mesh_around / 4);
+}
+
+TyreRadiationSettings coarse_settings() {
+  TyreRadiationSettings settings;
+  settings.mesh.around = 48;
+  settings.mesh.across = 4;
+  settings.mesh.sidewall_rings = 6;
+  settings.max_frequency_hz = 600.0;
+  settings.anchor_spacing_hz = 100.0;
+  return settings;
+}
+
+// The surface velocity over time of a monopole (volume velocity Re(q e^{iω0 t})) inside the
+// tyre, and its exact pressure at the receivers over the rigid road.
+struct MonopoleCase {
+  Eigen::Vector3d source{0.05, 0.02, 0.3};
+  Complex q{2e-4, 1e-4};
+  double f0 = 430.0;  // between two anchors
+  double fs = 4000.0;
+  Eigen::Index samples = 2000;
+};
+
+TEST(TyreRadiationStage, MonopoleFieldAndPowerOverTime) {
+  const MonopoleCase c;
+  Eigen::Matrix3Xd receivers(3, 3);
+  receivers << 0.2, -0.2, 0.0,  //
+      0.29, 0.29, 7.5,           //
+      0.1, 0.1, 1.2;
+  TyreRadiationSettings settings = coarse_settings();
+  settings.anchor_spacing_hz = 50.0;
+  const TyreRadiation radiation(settings, receivers);
+  const TyreSurfaceMesh& mesh = radiation.mesh();
+  const double omega = 2 * kPi * c.f0;
+  const double k = omega / settings.medium.sound_speed;
+  Eigen::VectorXcd amplitude(mesh.points.cols());
+  for (Eigen::Index m = 0; m < amplitude.size(); ++m)
+    amplitude(m) = -c.q * mesh.normals.col(m).cast<Complex>().dot(helmholtz_green_gradient(mesh.points.col(m), c.source, k, true));
+  Eigen::MatrixXd velocity(c.samples, mesh.points.cols());
+  for (Eigen::Index n = 0; n < c.samples; ++n)
+    velocity.row(n) = (amplitude * std::polar(1.0, omega * static_cast<double>(n) / c.fs)).real().transpose();
+
+  const RadiatedSound sound = radiation.radiate(velocity, c.fs);
+  ASSERT_EQ(sound.pressure.rows(), c.samples);
+  // Pressures in retarded time: p_r(t + τ_r). Compared away from the record's ends, where the
+  // transform's edges ring for a few milliseconds.
+  for (Eigen::Index r = 0; r < receivers.cols(); ++r) {
+    const Complex exact = Complex(0.0, omega * settings.medium.density) * c.q *
+                          helmholtz_green(receivers.col(r), c.source, k, true) * std::polar(1.0, omega * sound.delays_s(r));
+    double error = 0.0, scale = 0.0;
+    for (Eigen::Index n = 400; n < 1600; ++n) {
+      const double expected = (exact * std::polar(1.0, omega * static_cast<double>(n) / c.fs)).real();
+      error = std::max(error, std::abs(sound.pressure(n, r) - expected));
+      scale = std::max(scale, std::abs(expected));
+    }
+    // The coarse mesh (4 cm spacing, λ = 0.8 m) leaves 0.4 % (measured with anchors 10 Hz
+    // apart), the interpolation between anchors 50 Hz apart another 0.3 % (1.2 % at 100 Hz: the
+    // error grows as the spacing squared).
+    EXPECT_LE(error, 0.015 * scale) << "receiver " << r;
+    RecordProperty("pressure_error_r" + std::to_string(r), std::to_string(error / scale));
+  }
+  // Power over the rigid road: W₀(1 + sin 2kh/2kh), W₀ = ρck²|q|²/(8π), h = the source's height;
+  // the bins' sum is the record's mean power (Parseval), the leakage outside 20…600 Hz of a
+  // 0.5 s record well under 1 %.
+  const Medium air = settings.medium;
+  const double h = c.source.z();
+  const double expected_power =
+      air.density * air.sound_speed * k * k * std::norm(c.q) / (8 * kPi) * (1 + std::sin(2 * k * h) / (2 * k * h));
+  EXPECT_NEAR(sound.sound_power_w.sum(), expected_power, 0.01 * expected_power);
+  RecordProperty("power_error", std::to_string(sound.sound_power_w.sum() / expected_power - 1.0));
+}
+
+TEST(TyreRadiationStage, SameNumbersWithAnyThreadCount) {
+  Eigen::Matrix3Xd receivers(3, 1);
+  receivers << 0.2, 0.29, 0.1;
+  TyreRadiationSettings settings = coarse_settings();
+  settings.max_frequency_hz = 300.0;
+  Eigen::MatrixXd velocity(400, 48 * 4);
+  for (Eigen::Index n = 0; n < velocity.rows(); ++n)
+    for (Eigen::Index m = 0; m < velocity.cols(); ++m) velocity(n, m) = std::sin(0.1 * static_cast<double>(n * (1 + m % 7)) + 0.3 * static_cast<double>(m));
+  settings.threads = 1;
+  const RadiatedSound one = TyreRadiation(settings, receivers).radiate(velocity, 1000.0);
+  settings.threads = 3;
+  const RadiatedSound three = TyreRadiation(settings, receivers).radiate(velocity, 1000.0);
+  EXPECT_EQ(one.pressure, three.pressure);
+  EXPECT_EQ(one.sound_power_w, three.sound_power_w);
+  EXPECT_GT(one.pressure.norm(), 0.0);
+}
+
+TEST(TyreRadiationStage, Anchors) {
+  Eigen::Matrix3Xd receivers(3, 1);
+  receivers << 0.2, 0.29, 0.1;
+  TyreRadiationSettings settings = coarse_settings();
+  settings.max_frequency_hz = 3000.0;
+  const TyreRadiation radiation(settings, receivers);
+  const std::vector<double> a = radiation.anchors(48000.0);
+  ASSERT_GE(a.size(), 4u);
+  EXPECT_EQ(a.front(), 20.0);
+  EXPECT_EQ(a[1], 50.0);
+  EXPECT_EQ(a[2], 100.0);
+  EXPECT_EQ(a.back(), 3000.0);
+  // Capped below the Nyquist frequency of the velocities.
+  EXPECT_LT(radiation.anchors(4000.0).back(), 2000.0);
+  EXPECT_THROW(radiation.radiate(Eigen::MatrixXd::Zero(10, 5), 1000.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rollnoise
