@@ -303,9 +303,11 @@ TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
   Workspace ws;
   const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
   ws.write("tyre.toml", edit_case(project_case("plate_rough_80kmh.toml"),
-                                  {{"tyre", "file", "\"" + model + "\""}, {"rolling", "duration", "0.01"}}));
+                                  {{"tyre", "file", "\"" + model + "\""}, {"rolling", "duration", "0.01"},
+                                   {"radiation", "enabled", "false"}}));
   const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
   ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_FALSE(fs::exists(ws.path("tyre") / "spectrum.csv")) << "[radiation] enabled = false";
   EXPECT_EQ(first_line(ws.path("tyre") / "contact.csv"), "time,total_force,contact_area,contact_length");
   const nlohmann::json summary = read_json(ws.path("tyre") / "summary.json");
   for (const char* key : {"mean_total_force_N", "max_total_force_N", "mean_contact_area_m2", "patch_length_m",
@@ -321,6 +323,50 @@ TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
       EXPECT_TRUE(fs::exists(ws.path("tyre") / (std::string(plot) + ".png"))) << plot;
       EXPECT_TRUE(fs::exists(ws.path("tyre") / (std::string(plot) + ".gp"))) << plot;
     }
+  }
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+// The sound of a tyre run: spectra, levels, sound power and calibrated WAV files, on a coarse
+// radiation mesh to keep the test short. The WAV files analysed by `rollnoise analyse` give
+// back the levels `simulate` reported: the two verbs process sound the same way, and the WAV
+// keeps the level (float samples, the full scale in the comment).
+TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  ws.write("tyre.toml", edit_case(project_case("plate_rough_80kmh.toml"),
+                                  {{"tyre", "file", "\"" + model + "\""},
+                                   {"rolling", "duration", "0.02"},
+                                   {"radiation", "mesh_around", "32"},
+                                   {"radiation", "mesh_across", "2"},
+                                   {"radiation", "sidewall_rings", "4"},
+                                   {"radiation", "max_frequency", "1500"},
+                                   {"radiation", "anchor_spacing", "250"}}));
+  const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const fs::path out = ws.path("tyre");
+  EXPECT_EQ(first_line(out / "spectrum.csv"), "receiver,band_hz,Lp_dB,LpA_dB");
+  EXPECT_EQ(first_line(out / "sound_power.csv"), "band_hz,Lw_dB,LwA_dB");
+  const nlohmann::json summary = read_json(out / "summary.json");
+  ASSERT_TRUE(summary.contains("levels")) << summary.dump(1);
+  for (const char* receiver : {"cpx_front", "cpx_rear", "spb", "spb_passby"}) {
+    ASSERT_TRUE(summary["levels"].contains(receiver)) << receiver;
+    for (const char* key : {"Leq_dB", "LAeq_dB", "LAFmax_dB"})
+      EXPECT_TRUE(summary["levels"][receiver][key].is_number()) << receiver << " " << key;
+    EXPECT_TRUE(fs::exists(out / (std::string(receiver) + ".wav"))) << receiver;
+  }
+  // A rolling tyre is loud beside it and quiet 7.5 m away.
+  EXPECT_GT(summary["levels"]["cpx_front"]["LAeq_dB"].get<double>(), summary["levels"]["spb"]["LAeq_dB"].get<double>() + 15);
+  EXPECT_GT(summary["full_scale_pa"].get<double>(), 0.0);
+  EXPECT_GE(summary["wav_duration_s"].get<double>(), 5.0);
+  EXPECT_TRUE(summary["sound_power"]["LwA_dB"].is_number());
+
+  const RunResult a = ws.run({"analyse", (out / "cpx_front.wav").string(), "--out", "heard"});
+  ASSERT_EQ(a.status, 0) << describe(a);
+  const nlohmann::json heard = read_json(ws.path("heard") / "summary.json");
+  EXPECT_EQ(heard["full_scale_pa"].get<double>(), summary["full_scale_pa"].get<double>()) << "from the WAV's comment";
+  for (const char* key : {"Leq_dB", "LAeq_dB", "LAFmax_dB"}) {
+    EXPECT_NEAR(heard["levels"]["ch1"][key].get<double>(), summary["levels"]["cpx_front"][key].get<double>(), 0.01) << key;
   }
   EXPECT_TRUE(ws.leftovers().empty());
 }

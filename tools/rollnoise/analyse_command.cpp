@@ -5,20 +5,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/sound_levels.hpp"
 #include "audio/wav_file.hpp"
-#include "core/csv.hpp"
 #include "core/error.hpp"
-#include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
 #include "core/uff58.hpp"
+#include "sound_report.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -94,21 +90,6 @@ std::vector<Recording> read_uff_recordings(const AnalyseOptions& options) {
   return out;
 }
 
-void plot_spectra(const fs::path& dir, const std::vector<std::string>& receivers) {
-  std::ostringstream gp;
-  gp << "# Drawn by rollnoise from spectrum.csv; run `gnuplot spectrum.gp` to redraw.\n"
-     << "set terminal pngcairo size 1000,550 noenhanced font 'DejaVu Sans,10'\n"
-     << "set output 'spectrum.png'\nset datafile separator ','\nset grid\nset logscale x\n"
-     << "set xlabel 'third-octave band (Hz)'\nset ylabel 'L_{pA} (dB(A) re 20 uPa)'\nset key outside right\n"
-     << "set title 'A-weighted third-octave band levels'\nplot ";
-  for (std::size_t i = 0; i < receivers.size(); ++i) {
-    gp << (i ? ", \\\n     " : "") << "'spectrum.csv' skip 1 using ((strcol(1) eq '" << receivers[i]
-       << "') ? $2 : 1/0):4 with linespoints lw 1.5 pt 7 ps 0.6 title '" << receivers[i] << "'";
-  }
-  gp << "\n";
-  write_plot(dir, "spectrum", gp.str());
-}
-
 }  // namespace
 
 CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& options) {
@@ -139,36 +120,9 @@ int run_analyse(const AnalyseOptions& options) {
 
   const fs::path out = options.out.empty() ? fs::path("out") / input.stem() : fs::path(options.out);
   StagedOutputDirectory staged(out);
-  std::ofstream csv_file(staged.staging() / "spectrum.csv", std::ios::binary);
-  csv_file << "receiver,band_hz,Lp_dB,LpA_dB\n";
-  nlohmann::json levels = nlohmann::json::object();
-  std::vector<std::string> names;
-  for (const Recording& r : recordings) {
-    const std::span<const double> p(r.pressure.data(), static_cast<std::size_t>(r.pressure.size()));
-    const double duration = static_cast<double>(p.size()) / r.sample_rate;
-    BandSpectrumOptions bands;
-    // Bands up to 10 kHz, or as far as the band filters meet the IEC 61260-1 class 1 mask
-    // (upper band edge below about fs/4); the filters' start-up is left out of the averages
-    // (up to half a second, never more than a tenth of the record).
-    bands.f_high = std::min(10000.0, r.sample_rate / 4.5);
-    bands.settle_time = std::min(0.5, 0.1 * duration);
-    BandSpectrum spectrum;
-    try {
-      spectrum = band_spectrum(p, r.sample_rate, bands);
-    } catch (const InputError& error) {
-      throw InputError(options.file, r.receiver, "too short or too coarsely sampled for band levels: " + error.problem());
-    }
-    for (std::size_t b = 0; b < spectrum.lp_db.size(); ++b) {
-      csv_file << r.receiver << ',' << spectrum.labels[b] << ',' << format_number(spectrum.lp_db[b]) << ','
-               << format_number(spectrum.lpa_db[b]) << '\n';
-    }
-    levels[r.receiver] = {{"Leq_dB", leq_db(p)}, {"LAeq_dB", laeq_db(p, r.sample_rate)}, {"LAFmax_dB", lafmax_db(p, r.sample_rate)},
-                          {"sample_rate_hz", r.sample_rate}, {"duration_s", duration}};
-    names.push_back(r.receiver);
-  }
-  csv_file.close();
-  if (!csv_file) throw std::runtime_error("cannot write spectrum.csv");
-  plot_spectra(staged.staging(), names);
+  std::vector<ReceiverSignal> signals;
+  for (const Recording& r : recordings) signals.push_back({r.receiver, r.pressure, r.sample_rate});
+  const nlohmann::json levels = write_sound_report(staged.staging(), signals, options.file);
   nlohmann::json summary;
   summary["input"] = options.file;
   if (full_scale > 0.0) summary["full_scale_pa"] = full_scale;

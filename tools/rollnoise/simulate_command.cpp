@@ -45,7 +45,7 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
 int run_simulate(const SimulateOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   const CaseFile file = CaseFile::load(options.case_file, options.overrides);
-  file.reject_unknown_sections({"tyre", "road", "rolling", "output"});
+  file.reject_unknown_sections({"tyre", "road", "rolling", "radiation", "output"});
   try {
     fs::path out = options.out;
     if (out.empty()) {
@@ -56,6 +56,10 @@ int run_simulate(const SimulateOptions& options) {
       return run_tyre_simulation(file, out, started);
     }
     const ConfigTable tyre = file.section("tyre");
+    if (file.top().contains("radiation")) {
+      throw InputError(file.name(), "radiation",
+                       "point models (sdof, coupled_sdof) have no radiating surface; [radiation] needs model = \"plate\"");
+    }
     const ConfigTable road_table = file.section("road");
     const ConfigTable rolling = file.section("rolling");
     const ConfigTable output = file.optional_section("output");

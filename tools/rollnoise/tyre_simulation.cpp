@@ -21,7 +21,9 @@
 #include "road/road_surface.hpp"
 #include "point_contact_output.hpp"
 #include "core/hdf5_writer.hpp"
+#include "radiation/belt_sampling.hpp"
 #include "response/surface_response.hpp"
+#include "tyre_sound.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -67,8 +69,11 @@ void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, co
 // contact.h5: the contact fields over the window and the belt's surface response, with units
 // and the grid as attributes. Returns the radial displacement of one material point (mid-width)
 // over one revolution, starting at the top of the tyre (empty if the run is shorter).
+// When `tread_velocity` is given, it receives the belt's velocity sampled onto the radiation
+// mesh's tread points by `sampling` (belt_sampling.hpp), one row per step.
 std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingPlate& plate,
-                                 double speed, double load) {
+                                 double speed, double load, const Eigen::SparseMatrix<double>* sampling,
+                                 Eigen::MatrixXd* tread_velocity) {
   const TyreGrid& grid = plate.grid();
   Hdf5Writer h5(path);
   h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
@@ -116,8 +121,10 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   Eigen::MatrixXd u(across, around), v(across, around);
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> slice(across, around);
   std::vector<double> revolution;
+  if (tread_velocity) tread_velocity->resize(static_cast<Eigen::Index>(samples), sampling->rows());
   for (std::size_t n = 0; n < samples; ++n) {
     response.step(t.force.row(static_cast<Eigen::Index>(n)).transpose(), u, v);
+    if (tread_velocity) tread_velocity->row(static_cast<Eigen::Index>(n)) = (*sampling * v.reshaped()).transpose();
     slice = u.cast<float>();
     displacement->append(slice.data());
     slice = v.cast<float>();
@@ -212,6 +219,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
+  const TyreSoundSettings sound =
+      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width);
   output.reject_unknown_keys();
 
   TyreGrid grid;
@@ -263,8 +272,12 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   Eigen::Index snapshot = 0;
   trace.total_force.maxCoeff(&snapshot);
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
+  const Eigen::SparseMatrix<double> sampling = belt_to_tread_matrix(
+      grid.circumferential, grid.lateral, sound.radiation.mesh.around, sound.radiation.mesh.across);
+  Eigen::MatrixXd tread_velocity;
   const std::vector<double> revolution =
-      write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load);
+      write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load,
+                   &sampling, sound.enabled ? &tread_velocity : nullptr);
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
     write_greens_circumference(staged.staging(), plate, grid.circumferential);
@@ -303,6 +316,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"steps", steps},
                          {"static_load_N", settings.static_load},
                          {"history", to_string(settings.history)}};
+  if (sound.enabled) {
+    const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, tread_velocity, 1.0 / dt, settings.speed,
+                                                  fs::path(file.path()).filename().string(), plots);
+    for (const auto& [key, value] : heard.items()) summary[key] = value;
+  }
   summary["warnings"] = trace.warnings;
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
   summary["contact_time_s"] = contact_seconds;
@@ -311,7 +329,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
-  std::printf("rollnoise: wrote %s (contact.csv, contact.h5, summary.json%s)\n", out.string().c_str(),
+  std::printf("rollnoise: wrote %s (contact.csv, contact.h5, summary.json%s%s)\n", out.string().c_str(),
+              sound.enabled ? (sound.wav ? ", spectrum.csv, sound_power.csv, WAV files" : ", spectrum.csv, sound_power.csv")
+                            : "",
               plots ? " and plots" : "");
   return 0;
 }

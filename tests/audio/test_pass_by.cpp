@@ -1,0 +1,379 @@
+// Pass-by auralisation against references computed here independently of pass_by(): emission
+// times by fixed-point iteration of t_e = t − r(t_e)/c (pass_by solves them in closed form),
+// the analytic Doppler factor 1/(1 − M cos θ), spherical spreading 1/r, and the image-source
+// interference |1/r1 + R e^{−ikΔr}/r2|. Checked: the whole waveform of a tone (the
+// interpolation error), the received frequency approaching and receding, the level along the
+// pass, the ground dip at the closest approach, the low-frequency normalisation and the time
+// alignment, and argument checking.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "audio/pass_by.hpp"
+
+namespace rollnoise {
+namespace {
+
+using std::numbers::pi;
+
+constexpr double fs = 48000.0;
+// 0.1 s sources: every multiple of 10 Hz is a whole number of cycles, so the looped source is
+// exactly the endless tone and the references need no loop of their own.
+constexpr Eigen::Index source_length = 4800;
+
+Eigen::VectorXd tone(double frequency, double amplitude, double phase = 0.0) {
+  Eigen::VectorXd x(source_length);
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    x[i] = amplitude * std::sin(2.0 * pi * frequency * static_cast<double>(i) / fs + phase);
+  return x;
+}
+
+double db(double ratio) { return 20.0 * std::log10(ratio); }
+
+// The two path lengths abeam and the normalisation 1/(1/r1_0 + R/r2_0).
+struct Abeam {
+  double r1, r2, norm;
+};
+Abeam abeam(const PassBySettings& s) {
+  const double d = s.receiver_distance;
+  const double above = s.receiver_height - s.source_height;
+  const double below = s.receiver_height + s.source_height;
+  const double r1 = std::sqrt(d * d + above * above);
+  const double r2 = std::sqrt(d * d + below * below);
+  return {r1, r2, 1.0 / (1.0 / r1 + s.ground_reflection / r2)};
+}
+
+// The emission behind what the receiver hears at time t along one path (direct or image):
+// emission time, distance then, and cos θ between the velocity (+x) and the direction from
+// the source to the receiver. Fixed-point iteration of t_e = t − r(t_e)/c, a contraction by
+// M |cos θ| <= 0.3 per step, run to convergence.
+struct Emission {
+  double time, distance, cos_theta;
+};
+Emission emission(double t, const PassBySettings& s, bool image) {
+  const double dz = image ? s.receiver_height + s.source_height
+                          : s.receiver_height - s.source_height;
+  const double lateral_sq = s.receiver_distance * s.receiver_distance + dz * dz;
+  const auto distance = [&](double te) {
+    const double x = s.speed * (te - 0.5 * s.duration);
+    return std::sqrt(x * x + lateral_sq);
+  };
+  double te = t;
+  for (int i = 0; i < 200; ++i) {
+    const double next = t - distance(te) / s.sound_speed;
+    const bool converged = std::abs(next - te) < 1e-15;
+    te = next;
+    if (converged) break;
+  }
+  const double x = s.speed * (te - 0.5 * s.duration);
+  const double r = distance(te);
+  return {te, r, -x / r};
+}
+
+// The exact received pressure at time t for a source tone a·sin(2π f t + phase): each path
+// carries the tone as emitted at t_e, with the header's time alignment (the source is read at
+// t_e + r1_0/c), divided by the distance at emission.
+double tone_pass_by(double t, double f, double a, double phase, const PassBySettings& s) {
+  const Abeam ab = abeam(s);
+  const double shift = ab.r1 / s.sound_speed;
+  const Emission direct = emission(t, s, false);
+  double p = std::sin(2.0 * pi * f * (direct.time + shift) + phase) / direct.distance;
+  if (s.ground_reflection > 0.0) {
+    const Emission image = emission(t, s, true);
+    p += s.ground_reflection * std::sin(2.0 * pi * f * (image.time + shift) + phase) /
+         image.distance;
+  }
+  return ab.norm * a * p;
+}
+
+// The whole cycles of y between its first and last rising zero crossings inside [t0, t1]
+// (crossing times by linear interpolation): their mean frequency, their amplitude (√2 × RMS)
+// and their middle time.
+struct Cycles {
+  double frequency, amplitude, middle;
+};
+Cycles whole_cycles(const Eigen::VectorXd& y, double t0, double t1) {
+  const auto i0 = static_cast<Eigen::Index>(std::ceil(t0 * fs));
+  const auto i1 = static_cast<Eigen::Index>(std::floor(t1 * fs));
+  double first = -1.0, last = -1.0;
+  int crossings = 0;
+  for (Eigen::Index i = i0 + 1; i <= i1; ++i) {
+    if (y[i - 1] < 0.0 && y[i] >= 0.0) {
+      const double t = static_cast<double>(i - 1) + y[i - 1] / (y[i - 1] - y[i]);
+      if (first < 0.0) first = t;
+      last = t;
+      ++crossings;
+    }
+  }
+  // y² over the whole cycles by the trapezoidal rule, with the partial first and last
+  // intervals (y is ~0 at the crossings, so their ends contribute ~nothing).
+  const auto a = static_cast<Eigen::Index>(std::ceil(first));
+  const auto b = static_cast<Eigen::Index>(std::floor(last));
+  double energy = 0.5 * y[a] * y[a] * (static_cast<double>(a) - first) +
+                  0.5 * y[b] * y[b] * (last - static_cast<double>(b));
+  for (Eigen::Index i = a; i < b; ++i) energy += 0.5 * (y[i] * y[i] + y[i + 1] * y[i + 1]);
+  return {(crossings - 1) * fs / (last - first), std::sqrt(2.0 * energy / (last - first)),
+          0.5 * (first + last) / fs};
+}
+
+// Amplitude of the f component over samples [i0, i0 + n) by projection on sin and cos (exact
+// for a steady tone with a whole number of cycles in the window).
+double tone_amplitude(const Eigen::VectorXd& y, double f, Eigen::Index i0, Eigen::Index n) {
+  double s = 0.0, c = 0.0;
+  for (Eigen::Index i = i0; i < i0 + n; ++i) {
+    const double phase = 2.0 * pi * f * static_cast<double>(i) / fs;
+    s += y[i] * std::sin(phase);
+    c += y[i] * std::cos(phase);
+  }
+  return 2.0 * std::hypot(s, c) / static_cast<double>(n);
+}
+
+// ------------------------------------------------------------------------------------------
+
+TEST(PassBy, ToneMatchesTheExactRetardedField) {
+  // The whole output of a looped tone against the exact field, sample by sample. The only
+  // approximation in pass_by is the interpolation of the source between samples, so this
+  // measures it: 6-point Lagrange errs by at most 5e-3 (2π f/fs)^6 relative per path (2.4e-8
+  // at 1 kHz, 1.7e-5 at 3 kHz, 1.0e-3 at 6 kHz), and the paths' gains add up to at most 1
+  // (abeam). Tolerances: twice those bounds (plus 1e-9 for rounding in the references).
+  struct Case {
+    double f, speed, bound;
+  };
+  for (const Case& c : {Case{1000.0, 30.0, 2.4e-8}, Case{3000.0, 30.0, 1.75e-5},
+                        Case{3000.0, 0.29 * 343.2, 1.75e-5}, Case{6000.0, 30.0, 1.04e-3}}) {
+    PassBySettings s;
+    s.speed = c.speed;
+    s.duration = 1.0;
+    const double amplitude = 2.0;
+    const Eigen::VectorXd y = pass_by(tone(c.f, amplitude, 0.7), fs, s);
+    ASSERT_EQ(y.size(), 48000);
+    double error = 0.0;
+    for (Eigen::Index i = 0; i < y.size(); ++i) {
+      const double t = static_cast<double>(i) / fs;
+      error = std::max(error, std::abs(y[i] - tone_pass_by(t, c.f, amplitude, 0.7, s)));
+    }
+    error /= amplitude;
+    std::printf("  %4.0f Hz at %5.1f m/s: max error %.2e of the source amplitude (%.1f dB)\n",
+                c.f, c.speed, error, db(error));
+    EXPECT_LT(error, 2.0 * c.bound + 1e-9) << c.f << " Hz, " << c.speed << " m/s";
+  }
+}
+
+TEST(PassBy, DopplerShiftApproachingAndReceding) {
+  // 1 kHz at 30 m/s (M = 0.087) without the ground: the received frequency over 50 ms windows
+  // centred 1.9 s before and after the closest approach (the tyre ~57 m away) against
+  // f0 / (1 − M cos θ) at the emission time of the window's middle. The zero-crossing
+  // frequency is the window's mean; the frequency changes by < 0.1 Hz per 0.1 s there, almost
+  // linearly, so the mean is the middle's value to ~1e-5 Hz. Linear interpolation of the
+  // crossings of a sine errs by < (ωh)³/24 rad ≈ 1.2e-4 rad (1.8e-8 s) per crossing, so over
+  // 50 ms the frequency is resolved to ~1e-3 Hz. Tolerance 0.01 Hz: the ~90 Hz shift to 1e-4,
+  // and tight enough to fail if θ were taken where the tyre is when heard (0.14 Hz off).
+  // (The shift is +95 Hz approaching, −80 Hz receding.)
+  PassBySettings s;
+  s.speed = 30.0;
+  s.ground_reflection = 0.0;
+  const double f0 = 1000.0, mach = s.speed / s.sound_speed;
+  const Eigen::VectorXd y = pass_by(tone(f0, 1.0), fs, s);
+  for (const double centre : {0.6, 4.4}) {
+    const Cycles cycles = whole_cycles(y, centre - 0.025, centre + 0.025);
+    const Emission e = emission(cycles.middle, s, false);
+    const double expected = f0 / (1.0 - mach * e.cos_theta);
+    std::printf("  t = %.2f s (cos θ = %+.4f): %.4f Hz, Doppler formula %.4f Hz, error %.1e Hz\n",
+                cycles.middle, e.cos_theta, cycles.frequency, expected,
+                cycles.frequency - expected);
+    EXPECT_NEAR(cycles.frequency, expected, 0.01) << "t = " << centre;
+    EXPECT_GT(std::abs(expected - f0), 70.0) << "the test must see a large shift";
+  }
+}
+
+TEST(PassBy, LevelFollowsTheDistanceAtEmission) {
+  // Without the ground the amplitude is A r1_0 / r(t_e). Measured as √2 × RMS over the whole
+  // cycles in 20 ms windows: the amplitude changes almost linearly over a window, which moves
+  // the RMS by < 1e-5 dB; near the closest approach r is quadratic in time, +0.002 dB at most.
+  // Tolerance 0.01 dB; using the distance when heard instead of when emitted is 0.7 dB off at
+  // t = 0.5 s and 1.5 s.
+  PassBySettings s;
+  s.speed = 30.0;
+  s.ground_reflection = 0.0;
+  const double amplitude = 1.5;
+  const Eigen::VectorXd y = pass_by(tone(1000.0, amplitude), fs, s);
+  const double closest = 0.5 * s.duration + abeam(s).r1 / s.sound_speed;
+  for (const double t : {0.5, 1.5, closest, 3.5, 4.5}) {
+    const Cycles cycles = whole_cycles(y, t - 0.01, t + 0.01);
+    const Emission e = emission(cycles.middle, s, false);
+    const double expected = amplitude * abeam(s).r1 / e.distance;
+    const double error_db = db(cycles.amplitude / expected);
+    std::printf("  t = %.3f s, r = %6.2f m: level %+7.3f dB re abeam, error %+.1e dB\n",
+                cycles.middle, e.distance, db(cycles.amplitude / amplitude), error_db);
+    EXPECT_LT(std::abs(error_db), 0.01) << "t = " << t;
+  }
+}
+
+TEST(PassBy, GroundReflectionInterferenceAtTheClosestApproach) {
+  // Source 1 m up, receiver 1.2 m up at 7.5 m: Δr = r2 − r1 = 0.313 m, first dip at
+  // c/(2Δr) = 548 Hz. At 1 m/s the geometry hardly changes over the 0.1 s window around the
+  // closest approach (Δr by 7e-6 m, Doppler shift < 1e-4 Hz), so the level is the image-source
+  // formula |1/r1 + R e^{−ikΔr}/r2| / (1/r1 + R/r2). Tolerance 0.005 dB away from the dip;
+  // 0.02 dB at 550 Hz, 33 dB down, where the residual geometry change within the window
+  // (phase 7e-5 rad against a 0.014 rad mismatch from the exact dip) counts for ~0.004 dB.
+  struct Case {
+    double f, reflection, tolerance_db;
+  };
+  for (const Case& c : {Case{100.0, 1.0, 0.005}, Case{550.0, 1.0, 0.02}, Case{800.0, 1.0, 0.005},
+                        Case{1100.0, 1.0, 0.005}, Case{550.0, 0.5, 0.005}}) {
+    PassBySettings s;
+    s.speed = 1.0;
+    s.duration = 2.0;
+    s.source_height = 1.0;
+    s.receiver_height = 1.2;
+    s.ground_reflection = c.reflection;
+    const double amplitude = 1.0;
+    const Eigen::VectorXd y = pass_by(tone(c.f, amplitude, 0.3), fs, s);
+    const Abeam ab = abeam(s);
+    const double k = 2.0 * pi * c.f / s.sound_speed;
+    const std::complex<double> paths =
+        1.0 / ab.r1 + c.reflection * std::polar(1.0, -k * (ab.r2 - ab.r1)) / ab.r2;
+    const double expected = amplitude * std::abs(paths) / (1.0 / ab.r1 + c.reflection / ab.r2);
+    const auto centre = static_cast<Eigen::Index>(
+        std::llround((0.5 * s.duration + ab.r1 / s.sound_speed) * fs));
+    const double measured = tone_amplitude(y, c.f, centre - 2400, 4800);
+    const double error_db = db(measured / expected);
+    std::printf("  %4.0f Hz, R = %.1f: level %+8.3f dB (image-source formula %+8.3f dB), "
+                "error %+.1e dB\n",
+                c.f, c.reflection, db(measured / amplitude), db(expected / amplitude), error_db);
+    EXPECT_LT(std::abs(error_db), c.tolerance_db) << c.f << " Hz, R = " << c.reflection;
+  }
+}
+
+TEST(PassBy, LowFrequencyLevelAbeamIsTheSourceLevel) {
+  // Default SPB geometry (source 0.02 m up): Δr = 6.3 mm, so at 50 and 100 Hz the two paths
+  // are within 0.012 rad and the level abeam is the source's to 1.4e-4 dB, whatever R; the
+  // 1/r change across the 0.1 s window at 1 m/s takes off another 6e-5 dB. Tolerance 0.002 dB
+  // (leaving out the image's weight in q would be 6 dB off for R = 1).
+  for (const double reflection : {1.0, 0.3, 0.0}) {
+    for (const double f : {50.0, 100.0}) {
+      PassBySettings s;
+      s.speed = 1.0;
+      s.duration = 2.0;
+      s.ground_reflection = reflection;
+      const double amplitude = 0.8;
+      const Eigen::VectorXd y = pass_by(tone(f, amplitude, 1.1), fs, s);
+      const auto centre = static_cast<Eigen::Index>(
+          std::llround((0.5 * s.duration + abeam(s).r1 / s.sound_speed) * fs));
+      const double error_db = db(tone_amplitude(y, f, centre - 2400, 4800) / amplitude);
+      std::printf("  %3.0f Hz, R = %.1f: level abeam re the source %+.1e dB\n", f, reflection,
+                  error_db);
+      EXPECT_LT(std::abs(error_db), 0.002) << f << " Hz, R = " << reflection;
+    }
+  }
+  // Time alignment: abeam and without the ground, the source comes back sample for sample.
+  // Within ±1 ms at 1 m/s the distance changes by 7e-8 m: a delay of 2e-10 s, 1.2e-6 of the
+  // amplitude at 1 kHz; the interpolation adds 2.4e-8. Tolerance 5e-6 (a one-sample shift
+  // would be 0.13, and ±5 ms would already see the delay change, 3e-5).
+  PassBySettings s;
+  s.speed = 1.0;
+  s.duration = 2.0;
+  s.ground_reflection = 0.0;
+  const Eigen::VectorXd x = tone(1000.0, 1.0, 0.2);
+  const Eigen::VectorXd y = pass_by(x, fs, s);
+  const auto centre =
+      static_cast<Eigen::Index>(std::llround((1.0 + abeam(s).r1 / s.sound_speed) * fs));
+  double error = 0.0;
+  for (Eigen::Index i = centre - 48; i <= centre + 48; ++i)
+    error = std::max(error, std::abs(y[i] - x[i % x.size()]));
+  std::printf("  abeam, R = 0: max deviation from the source %.1e\n", error);
+  EXPECT_LT(error, 5e-6);
+}
+
+TEST(PassBy, ShortSourcesLoopAndTheResultIsDeterministic) {
+  // A constant source of 1, 2 or 3 samples (the periodic index wraps several times within
+  // the interpolator's 6 points): the output is exactly the spreading of the two paths,
+  // norm · (1/r1(t_e1) + R/r2(t_e2)).
+  PassBySettings s;
+  s.speed = 25.0;
+  s.duration = 0.5;
+  s.ground_reflection = 0.8;
+  const Abeam ab = abeam(s);
+  for (const Eigen::Index n : {Eigen::Index{1}, Eigen::Index{2}, Eigen::Index{3}}) {
+    const Eigen::VectorXd y = pass_by(Eigen::VectorXd::Constant(n, 0.25), fs, s);
+    ASSERT_EQ(y.size(), 24000);
+    for (const Eigen::Index i : {Eigen::Index{0}, Eigen::Index{9000}, Eigen::Index{12345},
+                                 Eigen::Index{23999}}) {
+      const double t = static_cast<double>(i) / fs;
+      const double expected = 0.25 * ab.norm *
+                              (1.0 / emission(t, s, false).distance +
+                               s.ground_reflection / emission(t, s, true).distance);
+      EXPECT_NEAR(y[i], expected, 1e-12) << "n = " << n << ", i = " << i;
+    }
+  }
+  EXPECT_EQ(pass_by(tone(440.0, 1.0), fs, s), pass_by(tone(440.0, 1.0), fs, s));
+  s.duration = 0.1 / fs * 7.0;  // 0.7 samples: rounds to one
+  EXPECT_EQ(pass_by(tone(440.0, 1.0), fs, s).size(), 1);
+}
+
+TEST(PassBy, BadArgumentsThrowNamingTheParameter) {
+  const Eigen::VectorXd x = tone(440.0, 1.0);
+  const auto expect_rejected = [](const Eigen::VectorXd& source, double rate,
+                                  const PassBySettings& settings, const std::string& name) {
+    try {
+      pass_by(source, rate, settings);
+      ADD_FAILURE() << "no exception for " << name;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  PassBySettings good;
+  good.speed = 20.0;
+  good.duration = 0.01;
+  EXPECT_EQ(pass_by(x, fs, good).size(), 480);
+
+  expect_rejected(Eigen::VectorXd(), fs, good, "source");
+  Eigen::VectorXd bad = x;
+  bad[17] = nan;
+  expect_rejected(bad, fs, good, "source");
+  for (const double rate : {0.0, -48000.0, nan, inf}) expect_rejected(x, rate, good, "sample_rate");
+
+  const auto with = [&](auto change) {
+    PassBySettings s = good;
+    change(s);
+    return s;
+  };
+  for (const double v : {0.0, -5.0, nan, inf, 0.3 * 343.2, 200.0})
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.speed = v; }), "speed");
+  for (const double v : {0.0, -7.5, nan, inf})
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.receiver_distance = v; }),
+                    "receiver_distance");
+  for (const double v : {-0.1, nan, inf}) {
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.receiver_height = v; }),
+                    "receiver_height");
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.source_height = v; }),
+                    "source_height");
+  }
+  for (const double v : {0.0, -1.0, nan, inf, 1e-6, 1e9})
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.duration = v; }), "duration");
+  for (const double v : {0.0, -343.2, nan, inf})
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.sound_speed = v; }), "sound_speed");
+  for (const double v : {-0.1, 1.1, nan})
+    expect_rejected(x, fs, with([&](PassBySettings& s) { s.ground_reflection = v; }),
+                    "ground_reflection");
+  // The limits themselves are accepted.
+  EXPECT_NO_THROW(pass_by(x, fs, with([](PassBySettings& s) {
+                            s.ground_reflection = 0.0;
+                            s.source_height = 0.0;
+                            s.receiver_height = 0.0;
+                            s.speed = 0.2999 * s.sound_speed;
+                          })));
+  EXPECT_NO_THROW(pass_by(x, fs, with([](PassBySettings& s) { s.ground_reflection = 1.0; })));
+}
+
+}  // namespace
+}  // namespace rollnoise

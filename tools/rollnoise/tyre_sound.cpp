@@ -1,0 +1,154 @@
+#include "tyre_sound.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "acoustics/fractional_octave_bands.hpp"
+#include "acoustics/frequency_weighting.hpp"
+#include "audio/pass_by.hpp"
+#include "audio/resampler.hpp"
+#include "audio/seamless_loop.hpp"
+#include "audio/wav_file.hpp"
+#include "core/config_table.hpp"
+#include "core/csv.hpp"
+#include "core/gnuplot.hpp"
+#include "core/progress.hpp"
+#include "sound_report.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+namespace {
+
+// Band sound power levels from the power in each transform bin: the bins within each band's
+// exact edges (IEC 61260-1), L_W re 1 pW, and A-weighted at the exact mid-band frequency.
+nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound, double highest_band_hz, bool plots) {
+  const std::vector<FractionalOctaveBand> bands = fractional_octave_bands(3, 20.0, highest_band_hz);
+  std::ofstream out(dir / "sound_power.csv", std::ios::binary);
+  CsvWriter csv(out, {"band_hz", "Lw_dB", "LwA_dB"});
+  double total = 0.0, total_a = 0.0;
+  for (const FractionalOctaveBand& band : bands) {
+    double power = 0.0;
+    for (Eigen::Index k = 0; k < sound.frequency_hz.size(); ++k)
+      if (sound.frequency_hz(k) >= band.lower && sound.frequency_hz(k) < band.upper) power += sound.sound_power_w(k);
+    const double a = weighting_db(FrequencyWeighting::A, band.exact);
+    const double lw = 10.0 * std::log10(std::max(power, 1e-30) / 1e-12);
+    total += power;
+    total_a += power * std::pow(10.0, a / 10.0);
+    const double row[] = {band.nominal, lw, lw + a};
+    csv.row(row, 3);
+  }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write sound_power.csv");
+  if (plots) {
+    std::ostringstream gp;
+    gp << "# Drawn by rollnoise from sound_power.csv; run `gnuplot sound_power.gp` to redraw.\n"
+       << "set terminal pngcairo size 1000,550 noenhanced font 'DejaVu Sans,10'\n"
+       << "set output 'sound_power.png'\nset datafile separator ','\nset grid\nset logscale x\n"
+       << "set xlabel 'third-octave band (Hz)'\nset ylabel 'sound power level (dB re 1 pW)'\nset key top left\n"
+       << "set title 'Sound power radiated by the tyre (into the half-space above the road)'\n"
+       << "plot 'sound_power.csv' skip 1 using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title 'L_W', \\\n"
+       << "     '' skip 1 using 1:3 with linespoints lw 1.5 pt 5 ps 0.6 title 'L_WA'\n";
+    write_plot(dir, "sound_power", gp.str());
+  }
+  return {{"Lw_dB", 10.0 * std::log10(std::max(total, 1e-30) / 1e-12)},
+          {"LwA_dB", 10.0 * std::log10(std::max(total_a, 1e-30) / 1e-12)},
+          {"total_W", total}};
+}
+
+}  // namespace
+
+TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
+                                           double width) {
+  TyreSoundSettings s;
+  s.enabled = radiation.boolean("enabled", true);
+  s.receivers = read_receivers(radiation, width);
+  s.radiation.mesh.radius = radius;
+  s.radiation.mesh.width = width;
+  s.radiation.max_frequency_hz = radiation.between("max_frequency", 20.0, 20000.0, 3000.0);
+  s.radiation.anchor_spacing_hz = radiation.between("anchor_spacing", 4.999, 1000.001, 100.0);
+  s.radiation.mesh.around = static_cast<int>(radiation.integer("mesh_around", 96, 8, 1024));
+  s.radiation.mesh.across = static_cast<int>(radiation.integer("mesh_across", 8, 1, 128));
+  s.radiation.mesh.sidewall_rings = static_cast<int>(radiation.integer("sidewall_rings", 12, 1, 256));
+  s.radiation.threads = static_cast<int>(radiation.integer("threads", 0, 0, 1024));
+  radiation.reject_unknown_keys();
+  for (const Receiver& r : s.receivers) {
+    // The body: a cylinder of the tyre's radius on the axle (mesh coordinates).
+    const double axle = radius + s.radiation.mesh.clearance;
+    const double from_axis = std::hypot(r.position.x(), r.position.z() - axle);
+    if (from_axis <= radius && std::abs(r.position.y()) <= 0.5 * width)
+      radiation.fail("receivers", "\"" + r.name + "\" is inside the tyre; receivers must be outside it");
+  }
+  s.wav = output.boolean("wav", true);
+  s.audio_rate = output.choice("audio_rate", {"48000", "44100"}, "48000") == "44100" ? 44100.0 : 48000.0;
+  s.wav_duration = output.between("wav_duration", 4.999, 3600.0, 5.0);
+  return s;
+}
+
+nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
+                                const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
+                                const std::string& source, bool plots) {
+  const auto started = std::chrono::steady_clock::now();
+  Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
+  for (std::size_t r = 0; r < settings.receivers.size(); ++r)
+    positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
+  const TyreRadiation radiation(settings.radiation, positions);
+  ProgressReporter progress("radiation " + source, radiation.anchors(sample_rate).size());
+  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, &progress);
+  progress.finish();
+  const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
+  const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);
+
+  // Each receiver at the audio rate, looped (without clicks) to the WAV's length.
+  std::vector<ReceiverSignal> signals;
+  for (std::size_t r = 0; r < settings.receivers.size(); ++r) {
+    const Eigen::VectorXd at_audio_rate =
+        resample(sound.pressure.col(static_cast<Eigen::Index>(r)), sample_rate, settings.audio_rate);
+    signals.push_back({settings.receivers[r].name,
+                       loop_to_duration(at_audio_rate, settings.audio_rate, settings.wav_duration), settings.audio_rate,
+                       highest_band});
+  }
+  // The pass-by at the SPB microphone (ISO 11819-1), from the stationary spb signal.
+  const auto spb = std::find_if(settings.receivers.begin(), settings.receivers.end(),
+                                [](const Receiver& r) { return r.name == "spb"; });
+  if (spb != settings.receivers.end()) {
+    PassBySettings passing;
+    passing.speed = speed;
+    passing.receiver_distance = spb->position.y();
+    passing.receiver_height = spb->position.z();
+    passing.duration = settings.wav_duration;
+    passing.sound_speed = settings.radiation.medium.sound_speed;
+    const ReceiverSignal& stationary = signals[static_cast<std::size_t>(spb - settings.receivers.begin())];
+    signals.push_back({"spb_passby", pass_by(make_loopable(stationary.pressure, settings.audio_rate), settings.audio_rate, passing),
+                       settings.audio_rate, highest_band});
+  }
+  nlohmann::json result;
+  result["levels"] = write_sound_report(dir, signals, source, plots);
+  result["sound_power"] = write_sound_power(dir, sound, highest_band, plots);
+
+  double peak = 0.0;
+  for (const ReceiverSignal& s : signals) peak = std::max(peak, s.pressure.cwiseAbs().maxCoeff());
+  const double full_scale = round_full_scale(peak);
+  if (settings.wav) {
+    for (const ReceiverSignal& s : signals) {
+      WavWriteOptions options;
+      options.full_scale_pa = full_scale;
+      options.title = s.name;
+      write_wav(dir / (s.name + ".wav"), s.pressure, settings.audio_rate, options);
+    }
+    result["full_scale_pa"] = full_scale;
+    result["audio_rate_hz"] = settings.audio_rate;
+    result["wav_duration_s"] = static_cast<double>(signals.front().pressure.size()) / settings.audio_rate;
+  }
+  result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
+                         {"anchors", radiation.anchors(sample_rate).size()},
+                         {"collocation_points", radiation.mesh().points.cols()},
+                         {"equivalent_sources", radiation.mesh().sources.cols()},
+                         {"time_s", radiation_seconds}};
+  return result;
+}
+
+}  // namespace rollnoise

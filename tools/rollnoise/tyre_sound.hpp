@@ -1,0 +1,42 @@
+#pragma once
+// The sound of a rolling tyre run: radiation from the belt's surface velocity to the receivers
+// (src/radiation), their spectra and levels (sound_report.hpp), calibrated WAV files at an audio
+// rate (src/audio), a pass-by at the SPB microphone, and the radiated sound power.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "radiation/receivers.hpp"
+#include "radiation/tyre_radiation.hpp"
+
+namespace rollnoise {
+
+class ConfigTable;
+
+struct TyreSoundSettings {
+  bool enabled = true;
+  TyreRadiationSettings radiation;
+  std::vector<Receiver> receivers;
+  bool wav = true;
+  double audio_rate = 48000.0;  // Hz: 48000 or 44100
+  double wav_duration = 5.0;    // s, at least 5: a shorter run is looped
+};
+
+// [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
+// sidewall_rings, threads; [output] wav, audio_rate, wav_duration. The tyre's radius and width
+// (m) shape the radiating body. Bad values are InputErrors naming the key.
+TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
+                                           double width);
+
+// Writes spectrum.csv, sound_power.csv, <receiver>.wav (and spb_passby.wav with an spb
+// receiver) and their plots into `dir`; returns the summary entries ("levels", "full_scale_pa",
+// "sound_power", "radiation"). tread_velocity: samples × tread points of the radiation mesh
+// (outward normal velocity, m/s) at `sample_rate`; speed in m/s.
+nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings,
+                                const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
+                                const std::string& source, bool plots);
+
+}  // namespace rollnoise
