@@ -371,6 +371,44 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   EXPECT_TRUE(ws.leftovers().empty());
 }
 
+// Bad radiation and sound settings: one message naming the key and what is allowed, exit 2,
+// nothing written, before any contact is solved.
+TEST(SimulateCli, PlateTyreBadSoundSettingsAreNamed) {
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  struct Bad {
+    Edit edit;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Bad> cases{
+      {{"radiation", "max_frequency", "-1"}, {"[radiation] max_frequency"}},
+      {{"radiation", "max_frequency", "nan"}, {"[radiation] max_frequency", "finite"}},
+      {{"radiation", "anchor_spacing", "0"}, {"[radiation] anchor_spacing"}},
+      {{"radiation", "mesh_around", "3"}, {"[radiation] mesh_around"}},
+      {{"radiation", "colour", "\"red\""}, {"[radiation] colour", "unknown key"}},
+      {{"radiation", "receivers", "[{name = \"in\", x = 0.0, y = 0.0, z = 0.3}]"}, {"[radiation] receivers", "inside the tyre"}},
+      {{"radiation", "receivers", "[\"cpx_middle\"]"}, {"[radiation] receivers", "cpx_middle", "cpx_front"}},
+      {{"output", "audio_rate", "22050"}, {"[output] audio_rate", "48000 or 44100"}},
+      {{"output", "wav_duration", "2.0"}, {"[output] wav_duration"}},
+      {{"output", "wav", "\"yes\""}, {"[output] wav"}},
+  };
+  for (const Bad& bad : cases) {
+    Workspace ws;
+    ws.write("tyre.toml", edit_case(project_case("plate_rough_80kmh.toml"), {{"tyre", "file", "\"" + model + "\""}, bad.edit}));
+    const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+    EXPECT_EQ(r.status, 2) << bad.edit.key << ": " << describe(r);
+    for (const std::string& text : bad.expect) EXPECT_TRUE(contains(r.err, text)) << bad.edit.key << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+    EXPECT_FALSE(fs::exists(ws.path("tyre")));
+  }
+  // Point models have no surface to radiate from.
+  Workspace ws;
+  ws.write("sdof.toml", edit_case(project_case(), {{"radiation", "receivers", "[\"spb\"]"}}));
+  const RunResult r = ws.run({"simulate", "sdof.toml", "--out", "out"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "[radiation]") || contains(r.err, "radiation")) << r.err;
+  EXPECT_TRUE(contains(r.err, "plate")) << r.err;
+}
+
 TEST(SimulateCli, PlateTyreRejectsAGivenTimeStep) {
   Workspace ws;
   const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();

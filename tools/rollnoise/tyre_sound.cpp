@@ -82,7 +82,9 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
       radiation.fail("receivers", "\"" + r.name + "\" is inside the tyre; receivers must be outside it");
   }
   s.wav = output.boolean("wav", true);
-  s.audio_rate = output.choice("audio_rate", {"48000", "44100"}, "48000") == "44100" ? 44100.0 : 48000.0;
+  const std::int64_t rate = output.integer("audio_rate", 48000, 1, 1000000);
+  if (rate != 48000 && rate != 44100) output.fail("audio_rate", "must be 48000 or 44100 (Hz)");
+  s.audio_rate = static_cast<double>(rate);
   s.wav_duration = output.between("wav_duration", 4.999, 3600.0, 5.0);
   return s;
 }
