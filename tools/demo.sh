@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job: set up, build, and run the demo cases in out/demo/: the paper's §4 validation
 # cases (an SDOF and two coupled SDOFs on a sine and a random road) with their figures, and the
-# 205/55 R16 tyre rolling on a smooth road, a rough road and over a cleat.
+# 205/55 R16 tyre rolling on a smooth road, a rough road and over a cleat. The rough-road and
+# cleat runs radiate to the CPX and SPB microphones: spectrum.csv, LAeq in summary.json,
+# <receiver>.wav (and spb_passby.wav) and spectrum.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
@@ -20,4 +22,5 @@ for script in docs/figures/*.gp; do
   cp "$script" "$out/figures/"
   (cd "$out/figures" && gnuplot "$(basename "$script")")
 done
-echo "demo: results in $out/ (one folder per case; paper figures in $out/figures/)"
+echo "demo: results in $out/ (one folder per case; paper figures in $out/figures/;"
+echo "      listen to $out/plate_rough_80kmh/cpx_front.wav and spb_passby.wav)"
