@@ -2,42 +2,45 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
 namespace rollnoise {
 namespace {
 
-// Overlaps of cells of two partitions of [0, 1) into n and m equal cells centred at i/n and
-// k/m (periodic) or (i + ½)/n and (k + ½)/m (not periodic): the fraction of coarse cell k
-// covered by fine cell i, for every pair that overlaps.
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// The overlaps of two partitions of an interval, fine cells [f_i, f_{i+1}) and coarse cells
+// [c_k, c_{k+1}), with the fine one extended periodically by `period` (0: not periodic): the
+// fraction of coarse cell k covered by fine cell i, for every pair that overlaps. The fine
+// partition is uniform: fine_edge(i) = start + i·step.
 struct Overlap {
   int fine = 0;
   int coarse = 0;
   double fraction = 0.0;
 };
 
-std::vector<Overlap> overlaps(int fine, int coarse, bool periodic) {
+std::vector<Overlap> overlaps(int fine, double start, double step, const std::vector<double>& coarse_edges, bool periodic) {
   std::vector<Overlap> out;
-  const double shift = periodic ? -0.5 : 0.0;  // cells centred on i/n start half a cell early
-  for (int k = 0; k < coarse; ++k) {
-    const double c0 = (k + shift) / coarse;
-    const double c1 = (k + 1 + shift) / coarse;
+  for (std::size_t k = 0; k + 1 < coarse_edges.size(); ++k) {
+    const double c0 = coarse_edges[k];
+    const double c1 = coarse_edges[k + 1];
     // Fine cells that can reach [c0, c1), with their periodic images.
-    const int first = static_cast<int>(std::floor(c0 * fine)) - 1;
-    const int last = static_cast<int>(std::ceil(c1 * fine)) + 1;
+    const int first = static_cast<int>(std::floor((c0 - start) / step)) - 1;
+    const int last = static_cast<int>(std::ceil((c1 - start) / step)) + 1;
     for (int i = first; i <= last; ++i) {
-      const double f0 = (i + shift) / fine;
-      const double f1 = (i + 1 + shift) / fine;
+      const double f0 = start + i * step;
+      const double f1 = start + (i + 1) * step;
       const double common = std::min(c1, f1) - std::max(c0, f0);
-      if (common <= 1e-15) continue;
+      if (common <= 1e-15 * (c1 - c0)) continue;
       int index = i;
       if (periodic) {
         index = ((i % fine) + fine) % fine;
       } else if (i < 0 || i >= fine) {
         continue;
       }
-      out.push_back({index, k, common * coarse});
+      out.push_back({index, static_cast<int>(k), common / (c1 - c0)});
     }
   }
   return out;
@@ -45,11 +48,21 @@ std::vector<Overlap> overlaps(int fine, int coarse, bool periodic) {
 
 }  // namespace
 
-Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, int mesh_around, int mesh_across) {
+Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, const TyreSurfaceMesh& mesh) {
+  const int mesh_around = mesh.tread_around;
+  const int mesh_across = mesh.tread_across;
   if (belt_around < 1 || belt_across < 1 || mesh_around < 1 || mesh_across < 1)
     throw std::invalid_argument("belt sampling: point counts must be at least 1");
-  const std::vector<Overlap> around = overlaps(belt_around, mesh_around, true);
-  const std::vector<Overlap> across = overlaps(belt_across, mesh_across, false);
+  const std::vector<double>& edges = mesh.tread_angle_edges;
+  if (edges.size() != static_cast<std::size_t>(mesh_around) + 1 || mesh.tread_points != mesh_around * mesh_across ||
+      !(std::abs(edges.back() - edges.front() - kTwoPi) < 1e-9) || !std::is_sorted(edges.begin(), edges.end()))
+    throw std::invalid_argument("belt sampling: the mesh's tread cells must cover one turn in Na + 1 rising edges");
+  // Around: belt cells centred on 2πg/Nθ start half a cell early.
+  const double belt_step = kTwoPi / belt_around;
+  const std::vector<Overlap> around = overlaps(belt_around, -0.5 * belt_step, belt_step, edges, true);
+  std::vector<double> across_edges(static_cast<std::size_t>(mesh_across) + 1);
+  for (std::size_t c = 0; c < across_edges.size(); ++c) across_edges[c] = static_cast<double>(c) / mesh_across;
+  const std::vector<Overlap> across = overlaps(belt_across, 0.0, 1.0 / belt_across, across_edges, false);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(around.size() * across.size() / std::max(1, std::min(mesh_around, mesh_across)));
   for (const Overlap& a : around)

@@ -8,14 +8,18 @@
 //
 // Conventions: belt cell (j, g) is centred at the angle 2πg/Nθ from the bottom of the tyre, in
 // the direction of travel, and at y_j = (j + ½)·b/Ny across the belt (SurfaceResponse); mesh tread
-// point a + Na·c is centred at the angle 2πa/Na and at y = −b/2 + (c + ½)·b/Nb
+// cell a + Na·c spans the angles [edges[a], edges[a + 1]] of mesh.tread_angle_edges (uniform,
+// or graded towards the contact) and is centred at y = −b/2 + (c + ½)·b/Nb
 // (tyre_surface_mesh.hpp). Both bands span the same width b.
 #include <Eigen/SparseCore>
+
+#include "radiation/tyre_surface_mesh.hpp"
 
 namespace rollnoise {
 
 // The sampling matrix (Na·Nb × Nθ·Ny) applied to the belt field flattened in column-major order
-// of its Ny × Nθ matrix (index j + Ny·g). std::invalid_argument for counts < 1.
-Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, int mesh_around, int mesh_across);
+// of its Ny × Nθ matrix (index j + Ny·g). std::invalid_argument for counts < 1 or a mesh whose
+// tread layout is inconsistent.
+Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, const TyreSurfaceMesh& mesh);
 
 }  // namespace rollnoise

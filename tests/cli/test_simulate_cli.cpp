@@ -341,7 +341,8 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
                                    {"radiation", "mesh_across", "2"},
                                    {"radiation", "sidewall_rings", "4"},
                                    {"radiation", "max_frequency", "1500"},
-                                   {"radiation", "anchor_spacing", "250"}}));
+                                   {"radiation", "anchor_spacing", "250"},
+                                   {"radiation", "contact_refinement", "3"}}));
   const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
   ASSERT_EQ(r.status, 0) << describe(r);
   const fs::path out = ws.path("tyre");
@@ -384,6 +385,7 @@ TEST(SimulateCli, PlateTyreBadSoundSettingsAreNamed) {
       {{"radiation", "max_frequency", "nan"}, {"[radiation] max_frequency", "finite"}},
       {{"radiation", "anchor_spacing", "0"}, {"[radiation] anchor_spacing"}},
       {{"radiation", "mesh_around", "3"}, {"[radiation] mesh_around"}},
+      {{"radiation", "contact_refinement", "0.5"}, {"[radiation] contact_refinement"}},
       {{"radiation", "colour", "\"red\""}, {"[radiation] colour", "unknown key"}},
       {{"radiation", "receivers", "[{name = \"in\", x = 0.0, y = 0.0, z = 0.3}]"}, {"[radiation] receivers", "inside the tyre"}},
       {{"radiation", "receivers", "[\"cpx_middle\"]"}, {"[radiation] receivers", "cpx_middle", "cpx_front"}},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -17,32 +18,62 @@ using Complex = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
 
 TEST(BeltSampling, KeepsVolumeVelocityAndConstants) {
-  const int around = 512, across = 20, mesh_around = 96, mesh_across = 8;
-  const Eigen::SparseMatrix<double> s = belt_to_tread_matrix(around, across, mesh_around, mesh_across);
-  // Each mesh cell is a weighted mean: its weights sum to 1, so a constant field stays constant.
-  const Eigen::VectorXd ones = s * Eigen::VectorXd::Ones(around * across);
-  EXPECT_LE((ones.array() - 1.0).abs().maxCoeff(), 1e-12);
-  // Volume velocity Σ v·ΔS is kept for any field: belt cells have area A/(512·20), mesh cells
-  // A/(96·8), so Σ_mesh v/(96·8) = Σ_belt v/(512·20).
-  Eigen::VectorXd field(around * across);
-  for (int g = 0; g < around; ++g)
-    for (int j = 0; j < across; ++j)
-      field(j + across * g) = std::sin(0.37 * g) * (1.0 + 0.1 * j) + (g == 0 ? 5.0 : 0.0);
-  const Eigen::VectorXd mesh = s * field;
-  EXPECT_NEAR(mesh.sum() / (mesh_around * mesh_across), field.sum() / (around * across), 1e-12);
-  // A belt cell at the bottom (g = 0, angle 0, straddling it) lands in mesh cell a = 0, and one
-  // a quarter turn on (angle π/2, in the direction of travel) in mesh cell 24; laterally, belt
-  // row j = 0 (the edge at y = 0) in mesh row 0.
+  const int around = 512, across = 20;
+  // The default uniform mesh (96 × 8) and one graded towards the contact (2 mm at the bottom).
+  TyreSurfaceMeshSpec graded;
+  graded.contact_refinement = 10.0;
+  for (const TyreSurfaceMeshSpec& spec : {TyreSurfaceMeshSpec{}, graded}) {
+    const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
+    const int mesh_around = mesh.tread_around;
+    SCOPED_TRACE("mesh around " + std::to_string(mesh_around));
+    const Eigen::SparseMatrix<double> s = belt_to_tread_matrix(around, across, mesh);
+    ASSERT_EQ(s.rows(), mesh.tread_points);
+    // Each mesh cell is a weighted mean: its weights sum to 1, so a constant field stays constant.
+    const Eigen::VectorXd ones = s * Eigen::VectorXd::Ones(around * across);
+    EXPECT_LE((ones.array() - 1.0).abs().maxCoeff(), 1e-12);
+    // Volume velocity Σ v·ΔS is kept for any field: belt cells have area A/(512·20), mesh cell
+    // (a, c) the share Δφ_a/(2π·Nb) of A, which is the mesh's own area over that of the band.
+    Eigen::VectorXd field(around * across);
+    for (int g = 0; g < around; ++g)
+      for (int j = 0; j < across; ++j)
+        field(j + across * g) = std::sin(0.37 * g) * (1.0 + 0.1 * j) + (g == 0 ? 5.0 : 0.0) + (g == 3 ? 2.0 : 0.0);
+    const Eigen::VectorXd sampled = s * field;
+    const double band_area = 2 * kPi * spec.radius * spec.width;
+    EXPECT_NEAR(sampled.dot(mesh.areas.head(mesh.tread_points)) / band_area, field.sum() / (around * across), 1e-12);
+    // A belt cell at the bottom (g = 0, angle 0, straddling it) lands in mesh cell a = 0, and one
+    // a quarter turn on (angle π/2, in the direction of travel) in the mesh cell around π/2;
+    // laterally, belt row j = 0 (the edge at y = 0) in mesh row 0.
+    Eigen::VectorXd spot = Eigen::VectorXd::Zero(around * across);
+    spot(0) = 1.0;
+    const Eigen::VectorXd at_bottom = s * spot;
+    Eigen::Index where = 0;
+    at_bottom.maxCoeff(&where);
+    EXPECT_EQ(where, 0);
+    spot.setZero();
+    spot(across * (around / 4)) = 1.0;
+    (s * spot).maxCoeff(&where);
+    const auto& edges = mesh.tread_angle_edges;
+    ASSERT_LT(where, mesh_around);
+    EXPECT_LE(edges[static_cast<std::size_t>(where)], 0.5 * kPi);
+    EXPECT_GE(edges[static_cast<std::size_t>(where) + 1], 0.5 * kPi);
+    if (spec.contact_refinement == 1.0) {
+      EXPECT_EQ(where, mesh_around / 4);
+    }
+  }
+  // On the graded mesh the cells at the bottom are finer than the belt's (2.1 mm against 3.9 mm):
+  // a belt cell there spreads over several mesh cells, each taking the belt cell's value.
+  const TyreSurfaceMesh mesh = make_tyre_surface_mesh(graded);
+  EXPECT_NEAR(mesh.tread_angle_edges[1] - mesh.tread_angle_edges[0], 2 * kPi / 960, 1e-15);
+  const Eigen::SparseMatrix<double> s = belt_to_tread_matrix(around, across, mesh);
   Eigen::VectorXd spot = Eigen::VectorXd::Zero(around * across);
-  spot(0) = 1.0;
-  const Eigen::VectorXd at_bottom = s * spot;
-  Eigen::Index where = 0;
-  at_bottom.maxCoeff(&where);
-  EXPECT_EQ(where, 0);
-  spot.setZero();
-  spot(across * (around / 4)) = 1.0;
-  (s * spot).maxCoeff(&where);
-  EXPECT_EQ(where, mesh_around / 4);
+  for (int j = 0; j < across; ++j) spot(j) = 1.0;  // g = 0, all across
+  const Eigen::VectorXd sampled = s * spot;
+  EXPECT_NEAR(sampled(0), 1.0, 1e-12);
+  // The next cell (2.5 mm wide, from 1 mm ahead of the bottom) is covered up to the belt cell's
+  // edge at π/512.
+  const auto& edges = mesh.tread_angle_edges;
+  EXPECT_NEAR(sampled(1), (kPi / around - edges[1]) / (edges[2] - edges[1]), 1e-12);
+  EXPECT_THROW(belt_to_tread_matrix(0, across, mesh), std::invalid_argument);
 }
 
 TyreRadiationSettings coarse_settings() {

@@ -22,6 +22,7 @@
 #include "point_contact_output.hpp"
 #include "core/hdf5_writer.hpp"
 #include "radiation/belt_sampling.hpp"
+#include "radiation/tyre_surface_mesh.hpp"
 #include "response/surface_response.hpp"
 #include "tyre_sound.hpp"
 
@@ -272,8 +273,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   Eigen::Index snapshot = 0;
   trace.total_force.maxCoeff(&snapshot);
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
-  const Eigen::SparseMatrix<double> sampling = belt_to_tread_matrix(
-      grid.circumferential, grid.lateral, sound.radiation.mesh.around, sound.radiation.mesh.across);
+  const Eigen::SparseMatrix<double> sampling =
+      belt_to_tread_matrix(grid.circumferential, grid.lateral, make_tyre_surface_mesh(sound.radiation.mesh));
   Eigen::MatrixXd tread_velocity;
   const std::vector<double> revolution =
       write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load,

@@ -1,0 +1,208 @@
+// The horn effect (Kropp, Becot & Barrelet, Acustica 86, 2000; Graf, Kuo & Dowling, JSV 256,
+// 2002): a point source in the wedge between tread and road, a few cm ahead of the contact line,
+// is heard in front of the tyre 10–20 dB louder at 1–3 kHz than the same source over the road
+// with no tyre. The equivalent-source model gives the field scattered by the rigid tyre: the
+// incident field (monopole + image) has normal velocity v_inc on the tyre's surface, the
+// scattered field the velocity −v_inc, and the amplification is
+//   ΔL = 20 log |p_inc + p_scat| / |p_inc|   at a receiver in the tyre's plane ahead of it.
+//
+// Two things make this hard for the mesh, both measured while writing the test:
+//  - along the tread, the wedge's gap is a few mm (c + s²/2R): the uniform 2 cm mesh misses it,
+//    the graded mesh (contact_refinement) resolves it;
+//  - across, the source's field on the tread is a spot a few mm wide: with the default 8 rows
+//    (2.25 cm apart) the answer depended on where the rows fell (0–13 dB); 16 rows (1.1 cm) and
+//    the tread's incident velocity taken as the mean over each cell, which is what the belt's
+//    sampling gives the mesh in a simulation (belt_sampling.hpp), made it converge.
+// A second, independent estimate checks the first: by reciprocity, the source at the receiver and
+// the pressure in the horn (the scattered field then comes from a smooth incident field, but is
+// needed 3 mm from the surface). Both agree within 2–3 dB at 1–2 kHz on the graded mesh; at
+// 3 kHz they do not (5 dB apart, while the 3 kHz interior check below passes): the 3 kHz
+// amplification is recorded, not asserted.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "radiation/equivalent_sources.hpp"
+#include "radiation/tyre_surface_mesh.hpp"
+
+namespace rollnoise {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+
+// The horn source: 5 cm ahead of the contact line, 3 mm above the road, in the centre plane
+// (the gap there is 6 mm). Receivers in the tyre's plane ahead of it.
+const Eigen::Vector3d kHornSource(0.05, 0.0, 0.003);
+Eigen::Matrix3Xd horn_receivers() {
+  Eigen::Matrix3Xd r(3, 3);
+  r << 0.5, 1.0, 0.5,  //
+      0.0, 0.0, 0.0,   //
+      0.05, 0.1, 0.2;
+  return r;
+}
+// The source inside the tyre for the interior check: near the contact, 8.6 mm inside the tread
+// (whose surface is 3.4 mm above the road at x = 3 cm). Not the off-centre source of
+// test_tyre_radiation.cpp, which radiates mostly through the sidewalls: these are too coarse
+// here for it (measured 31–38 % at 3 kHz; the default 12 rings pass that test).
+const Eigen::Vector3d kInsideNearContact(0.03, 0.0, 0.012);
+
+// The mesh the horn needs: graded towards the contact (2 mm cells at the bottom), 16 rows across,
+// coarser sidewalls (8 rings, 4 cm: they are far from the source) to keep the test short.
+TyreSurfaceMeshSpec graded_spec(double refinement) {
+  TyreSurfaceMeshSpec s;
+  s.contact_refinement = refinement;
+  s.across = 16;
+  s.sidewall_rings = 8;
+  return s;
+}
+
+// n·∇G at collocation point m for a source at `s`: on the tread the mean over the point's cell
+// (sub-sampled finer where the source is close), on the sidewalls the point value.
+Complex normal_gradient(const TyreSurfaceMeshSpec& spec, const TyreSurfaceMesh& mesh, Eigen::Index m,
+                        const Eigen::Vector3d& s, double k) {
+  const Eigen::Vector3cd normal = mesh.normals.col(m).cast<Complex>();
+  if (m >= mesh.tread_points) return normal.dot(helmholtz_green_gradient(mesh.points.col(m), s, k, true));
+  const auto a = static_cast<std::size_t>(m % mesh.tread_around);
+  const auto b = static_cast<double>(m / mesh.tread_around);
+  const double phi0 = mesh.tread_angle_edges[a], phi1 = mesh.tread_angle_edges[a + 1];
+  const double dy = spec.width / spec.across, y0 = -0.5 * spec.width + b * dy;
+  const double distance = (mesh.points.col(m) - s).norm();
+  const auto subdivisions = [&](double size) { return std::clamp(static_cast<int>(std::ceil(4.0 * size / distance)), 1, 64); };
+  const int na = subdivisions(spec.radius * (phi1 - phi0)), nb = subdivisions(dy);
+  const double axle = spec.radius + spec.clearance;
+  Complex sum = 0.0;
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j) {
+      const double phi = phi0 + (i + 0.5) * (phi1 - phi0) / na;
+      const Eigen::Vector3d x(spec.radius * std::sin(phi), y0 + (j + 0.5) * dy / nb, axle - spec.radius * std::cos(phi));
+      const Eigen::Vector3cd n(std::sin(phi), 0.0, -std::cos(phi));
+      sum += n.dot(helmholtz_green_gradient(x, s, k, true));
+    }
+  return sum / static_cast<double>(na * nb);
+}
+
+struct HornResult {
+  std::vector<double> direct_db;      // per receiver: amplification, source in the horn
+  std::vector<double> reciprocal_db;  // per receiver: source at the receiver, pressure in the horn
+  std::vector<double> interior_error; // relative error of the interior source's field at the
+                                      // receivers and at the horn point (R + 1)
+  double seconds = 0.0;
+};
+
+HornResult solve_horn(const TyreSurfaceMeshSpec& spec, double f) {
+  const auto started = std::chrono::steady_clock::now();
+  const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
+  const EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true);
+  const Medium air;
+  const double omega = 2 * kPi * f, k = omega / air.sound_speed;
+  const Complex iwr(0.0, omega * air.density);
+  const Eigen::Matrix3Xd receivers = horn_receivers();
+  const Eigen::Index nr = receivers.cols();
+  // Surface velocities (unit volume velocity): column 0 the scattered field's −v_inc of the horn
+  // source, 1 … R those of a source at each receiver, then the interior source's own +v.
+  Eigen::MatrixXcd v(mesh.points.cols(), nr + 2);
+  for (Eigen::Index m = 0; m < v.rows(); ++m) {
+    v(m, 0) = normal_gradient(spec, mesh, m, kHornSource, k);  // −v_inc = +n·∇G
+    for (Eigen::Index r = 0; r < nr; ++r) v(m, 1 + r) = normal_gradient(spec, mesh, m, receivers.col(r), k);
+    v(m, nr + 1) = -normal_gradient(spec, mesh, m, kInsideNearContact, k);
+  }
+  const Eigen::MatrixXcd q = model.solve(omega).strengths(v);
+  Eigen::Matrix3Xd at(3, nr + 1);
+  at << receivers, kHornSource;
+  const Eigen::MatrixXcd p = model.pressure_matrix(omega, at) * q;
+  HornResult out;
+  for (Eigen::Index r = 0; r < nr; ++r) {
+    const Complex incident = iwr * helmholtz_green(receivers.col(r), kHornSource, k, true);
+    out.direct_db.push_back(20.0 * std::log10(std::abs(incident + p(r, 0)) / std::abs(incident)));
+    out.reciprocal_db.push_back(20.0 * std::log10(std::abs(incident + p(nr, 1 + r)) / std::abs(incident)));
+  }
+  for (Eigen::Index r = 0; r <= nr; ++r) {
+    const Complex exact = iwr * helmholtz_green(at.col(r), kInsideNearContact, k, true);
+    out.interior_error.push_back(std::abs(p(r, nr + 1) - exact) / std::abs(exact));
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+// Each (mesh, frequency) is solved once for all the tests below (a few seconds each).
+const HornResult& horn(const std::string& name, const TyreSurfaceMeshSpec& spec, double f) {
+  static std::map<std::pair<std::string, double>, HornResult> cache;
+  const auto key = std::make_pair(name, f);
+  auto found = cache.find(key);
+  if (found == cache.end()) found = cache.emplace(key, solve_horn(spec, f)).first;
+  return found->second;
+}
+
+void record(const std::string& name, double f, const HornResult& r) {
+  std::string prefix = name;
+  prefix += "_";
+  prefix += std::to_string(static_cast<int>(f));
+  prefix += "Hz";
+  for (std::size_t i = 0; i < r.direct_db.size(); ++i) {
+    std::string key = prefix;
+    key += "_r";
+    key += std::to_string(i);
+    ::testing::Test::RecordProperty(key + "_dB", std::to_string(r.direct_db[i]));
+    ::testing::Test::RecordProperty(key + "_reciprocal_dB", std::to_string(r.reciprocal_db[i]));
+  }
+  ::testing::Test::RecordProperty(prefix + "_seconds", std::to_string(r.seconds));
+}
+
+TEST(HornEffect, GradedMeshResolvesFieldsNearTheContact) {
+  // A field known exactly, that of a monopole inside the tyre over the road, rebuilt from its
+  // normal velocity on the graded mesh at 3 kHz: at the receivers and at the horn point, 3 mm
+  // from the tread. Measured 1.2–2.5 % at the receivers, 4.3 % at the horn point.
+  const HornResult& r = horn("graded", graded_spec(10.0), 3000.0);
+  for (std::size_t i = 0; i < r.interior_error.size(); ++i) {
+    EXPECT_LE(r.interior_error[i], 0.06) << "check " << i;
+    RecordProperty("interior_error_3000Hz_" + std::to_string(i), std::to_string(r.interior_error[i]));
+  }
+  record("graded", 3000.0, r);
+}
+
+TEST(HornEffect, GradedMeshShowsTheHornAmplification) {
+  const Eigen::Index nr = horn_receivers().cols();
+  const HornResult& uniform = horn("uniform", TyreSurfaceMeshSpec{}, 1000.0);
+  record("uniform", 1000.0, uniform);
+  for (double f : {1000.0, 2000.0}) {
+    const HornResult& r = horn("graded", graded_spec(10.0), f);
+    record("graded", f, r);
+    for (Eigen::Index i = 0; i < nr; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      // Measured 14.3–16.2 dB (1 kHz) and 13.0–15.0 dB (2 kHz): within the 10–20 dB reported.
+      EXPECT_GE(r.direct_db[u], 10.0) << f << " Hz, receiver " << i;
+      EXPECT_LE(r.direct_db[u], 20.0) << f << " Hz, receiver " << i;
+      // Reciprocity: the two estimates agree (measured within 2.3 dB).
+      EXPECT_NEAR(r.direct_db[u], r.reciprocal_db[u], 3.0) << f << " Hz, receiver " << i;
+      // The default uniform mesh misses most of it (measured 3.9–4.4 dB at 1 kHz).
+      if (f == 1000.0) {
+        EXPECT_GE(r.direct_db[u] - uniform.direct_db[u], 6.0) << "receiver " << i;
+      }
+    }
+  }
+}
+
+TEST(HornEffect, AmplificationConvergesWithTheContactSpacing) {
+  // Halving the spacing at the contact (2.1 → 1.0 mm) lowers the 1 kHz amplification by
+  // measured 1.5 dB (16.2 → 14.8 dB at 0.5 m): converged to within that, not better.
+  const HornResult& coarse = horn("graded", graded_spec(10.0), 1000.0);
+  const HornResult& fine = horn("graded_x2", graded_spec(20.0), 1000.0);
+  record("graded_x2", 1000.0, fine);
+  for (std::size_t i = 0; i < coarse.direct_db.size(); ++i) {
+    EXPECT_LE(std::abs(fine.direct_db[i] - coarse.direct_db[i]), 2.5) << "receiver " << i;
+    EXPECT_GE(fine.direct_db[i], 10.0) << "receiver " << i;
+    RecordProperty("convergence_1000Hz_r" + std::to_string(i) + "_dB", std::to_string(fine.direct_db[i] - coarse.direct_db[i]));
+  }
+}
+
+}  // namespace
+}  // namespace rollnoise
