@@ -103,10 +103,25 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
   mesh.tread_around = around;
   mesh.tread_across = s.across;
   mesh.tread_angle_edges = std::move(edges);
-  // Sources: every stride-th collocation point, moved inwards along its normal by its depth.
-  // Tread sources move towards the axle: above the road, however close the point is to it.
+  // Sources: every stride-th collocation point of one half of the tyre, y ≤ 0, and the mirror
+  // images of those on the other half, so that the sources are mirror-symmetric like the points
+  // and the solve splits (equivalent_sources.hpp, MirrorPairing). Tread row c mirrors row
+  // Nb − 1 − c (same angles), the +y sidewall the −y one point by point. Each point moves
+  // inwards along its normal by its depth; tread sources move towards the axle: above the road,
+  // however close the point is to it. When Na and the points of a sidewall are multiples of the
+  // stride (the default meshes), these are the stride-th points in global order as before.
+  const int sidewall = static_cast<int>(n) - tread;  // both sidewalls
+  std::vector<Eigen::Index> chosen;
+  for (int c = 0; c < s.across; ++c) {
+    const int lower = std::min(c, s.across - 1 - c);
+    for (int a = 0; a < around; ++a)
+      if ((a + around * lower) % s.source_stride == 0) chosen.push_back(a + around * c);
+  }
+  for (int side = 0; side < 2; ++side)
+    for (int j = 0; j < sidewall / 2; ++j)
+      if ((tread + j) % s.source_stride == 0) chosen.push_back(tread + side * (sidewall / 2) + j);
   std::vector<Eigen::Vector3d> sources;
-  for (Eigen::Index i = 0; i < n; i += s.source_stride)
+  for (Eigen::Index i : chosen)
     sources.emplace_back(mesh.points.col(i) - depths[static_cast<std::size_t>(i)] * mesh.normals.col(i));
   mesh.sources.resize(3, static_cast<Eigen::Index>(sources.size()));
   for (std::size_t i = 0; i < sources.size(); ++i) mesh.sources.col(static_cast<Eigen::Index>(i)) = sources[i];

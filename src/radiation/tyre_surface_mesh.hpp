@@ -8,6 +8,9 @@
 // towards +x) and both sidewalls (flat disks). Equivalent sources sit a short depth inside the
 // surface, along the inward normal: about one to two point spacings, the usual choice that keeps
 // the least-squares problem well conditioned while the sources still resolve the surface's detail.
+// Points, normals and sources are mirror-symmetric about the centre plane y = 0 for every spec
+// (an odd `across` puts a tread row on the plane, mapped to itself), so the equivalent-source
+// solve splits into two half-size problems (equivalent_sources.hpp, MirrorPairing).
 //
 // Graded tread (contact_refinement > 1). The horn between tread and road is a wedge whose gap is
 // c + s²/2R at the arc distance s from the bottom (2 mm at the contact line, 6 mm 5 cm ahead with
@@ -35,7 +38,8 @@ struct TyreSurfaceMeshSpec {
   int sidewall_rings = 12;    // rings of collocation points on each sidewall (2.6 cm)
   double source_depth = 0.0;  // m inside the surface at the uniform spacing; 0: 1.5 tread point
                               // spacings. Graded tread: scaled with the local spacing around.
-  int source_stride = 2;      // one source per this many collocation points
+  int source_stride = 2;      // one source per this many collocation points (chosen on the half
+                              // y ≤ 0 and mirrored)
   // Graded tread: the cell at the bottom is 2πR/(around·contact_refinement) wide (1: uniform,
   // Na = around); the cells grow by contact_growth per cell away from it (1 < growth ≤ 2).
   double contact_refinement = 1.0;

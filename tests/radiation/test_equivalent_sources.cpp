@@ -1,9 +1,15 @@
 // The equivalent-source method against classic exact results: the pulsating sphere (pressure
 // and sound power), and a monopole over a rigid plane (the image-source field), with the
-// error falling as sources are added.
+// error falling as sources are added. And the mirror-split solve (MirrorPairing) against the
+// full one on symmetric bodies, and its fallback on bodies that are not.
 #include <cmath>
 #include <complex>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +127,140 @@ TEST(EquivalentSources, PowerOfAMonopoleOverARigidPlane) {
       EXPECT_NEAR(w, expected, 1e-12 * expected) << "h = " << h << ", f = " << f;
     }
   }
+}
+
+// A mirror-symmetric (y → −y) sphere of radius a at `centre` (on the plane y = 0): the Fibonacci
+// points with y > 0, their mirror images, and `on_plane` points on the great circle y = 0 (which
+// the mirror maps to themselves). Unit outward normals in `normals`.
+Eigen::Matrix3Xd symmetric_sphere(int n, int on_plane, double a, const Eigen::Vector3d& centre,
+                                  Eigen::Matrix3Xd* normals = nullptr) {
+  const Eigen::Matrix3Xd f = fibonacci_sphere(n);
+  std::vector<Eigen::Vector3d> unit;
+  for (Eigen::Index i = 0; i < f.cols(); ++i)
+    if (f(1, i) > 1e-3) {
+      unit.push_back(f.col(i));
+      unit.emplace_back(f(0, i), -f(1, i), f(2, i));
+    }
+  for (int i = 0; i < on_plane; ++i) {
+    const double t = 2 * kPi * (i + 0.25) / on_plane;
+    unit.emplace_back(std::cos(t), 0.0, std::sin(t));
+  }
+  Eigen::Matrix3Xd p(3, static_cast<Eigen::Index>(unit.size()));
+  for (std::size_t i = 0; i < unit.size(); ++i) p.col(static_cast<Eigen::Index>(i)) = unit[i];
+  if (normals) *normals = p;
+  return (p * a).colwise() + centre;
+}
+
+// For the recorded errors (std::to_string's fixed format shows them as 0).
+std::string scientific(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2e", x);
+  return text;
+}
+
+double relative_difference(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
+  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+// The split solve is the full one (to rounding) for velocities with no symmetry: both halves
+// and their recombination, the √2 of the orthonormal combinations and the points and sources on
+// the plane, in the free field and over the rigid plane.
+TEST(EquivalentSources, MirrorSplitSolveEqualsTheFullSolve) {
+  const double a = 0.1;
+  for (bool rigid_plane : {false, true}) {
+    const Eigen::Vector3d centre(0.02, 0.0, rigid_plane ? 0.15 : 0.0);
+    for (int on_plane : {0, 6}) {
+      Eigen::Matrix3Xd normals;
+      const Eigen::Matrix3Xd surface = symmetric_sphere(400, 2 * on_plane, a, centre, &normals);
+      const Eigen::Matrix3Xd sources = symmetric_sphere(120, on_plane, 0.5 * a, centre);
+      const EquivalentSources split(sources, surface, normals, rigid_plane, kAir);
+      const EquivalentSources full(sources, surface, normals, rigid_plane, kAir, EquivalentSources::Symmetry::none);
+      ASSERT_TRUE(split.mirror_symmetric());
+      ASSERT_FALSE(full.mirror_symmetric());
+      Eigen::Matrix3Xd receivers(3, 4);
+      receivers << 0.5, -1.0, 0.0, 2.0,  //
+          0.1, 0.3, -1.0, 0.0,           //
+          0.2, 0.4, 0.5, 1.2;
+      std::srand(7);
+      const Eigen::MatrixXcd v = Eigen::MatrixXcd::Random(surface.cols(), 3);  // no symmetry
+      for (double f : {300.0, 3000.0}) {
+        const double omega = 2 * kPi * f;
+        const EquivalentSourceSolve s = split.solve(omega), r = full.solve(omega);
+        EXPECT_TRUE(s.mirror_split());
+        const double transfer_error = relative_difference(split.transfer(omega, receivers), full.transfer(omega, receivers));
+        const double strength_error = relative_difference(s.strengths(v), r.strengths(v));
+        EXPECT_LE(transfer_error, 1e-9) << "f = " << f << ", plane " << rigid_plane << ", on the plane " << on_plane;
+        EXPECT_LE(strength_error, 1e-9) << "f = " << f << ", plane " << rigid_plane << ", on the plane " << on_plane;
+        EXPECT_LE(std::abs(split.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows())) -
+                           full.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows()))),
+                  1e-9 * std::abs(full.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows()))));
+        std::string key = "split_error_";
+        key += std::to_string(static_cast<int>(f));
+        key += rigid_plane ? "Hz_plane_" : "Hz_free_";
+        key += std::to_string(on_plane);
+        RecordProperty(key + "_transfer", scientific(transfer_error));
+        RecordProperty(key + "_strengths", scientific(strength_error));
+      }
+    }
+  }
+}
+
+// Sets that are not mirror-symmetric take the full solve: the Fibonacci lattice, a symmetric
+// set with one point moved by 2e-7 m (1e-6 of its size), mirrored points whose normals are not mirrored,
+// and symmetric points with sources that are not.
+TEST(EquivalentSources, UnpairedSetsFallBackToTheFullSolve) {
+  const double a = 0.1;
+  const Eigen::Vector3d centre(0.0, 0.0, 0.15);
+  Eigen::Matrix3Xd normals;
+  const Eigen::Matrix3Xd surface = symmetric_sphere(200, 0, a, centre, &normals);
+  const Eigen::Matrix3Xd sources = symmetric_sphere(60, 0, 0.5 * a, centre);
+  EXPECT_TRUE(EquivalentSources(sources, surface, normals, true, kAir).mirror_symmetric());
+
+  const Eigen::Matrix3Xd lattice = fibonacci_sphere(200);
+  EXPECT_FALSE(EquivalentSources((fibonacci_sphere(60) * 0.5 * a).colwise() + centre, (lattice * a).colwise() + centre,
+                                 lattice, true, kAir)
+                   .mirror_symmetric());
+  Eigen::Matrix3Xd moved = surface;
+  moved(0, 5) += 2e-7;
+  EXPECT_FALSE(EquivalentSources(sources, moved, normals, true, kAir).mirror_symmetric());
+  Eigen::Matrix3Xd turned = normals;
+  turned.col(3) = Eigen::Vector3d(turned(0, 3), turned(2, 3), turned(1, 3)).normalized();
+  EXPECT_FALSE(EquivalentSources(sources, surface, turned, true, kAir).mirror_symmetric());
+  Eigen::Matrix3Xd unpaired_sources = sources;
+  unpaired_sources(1, 0) *= 0.5;
+  const EquivalentSources fallback(unpaired_sources, surface, normals, true, kAir);
+  EXPECT_FALSE(fallback.mirror_symmetric());
+  // The fallback is the full solve: the same as asking for it.
+  const double omega = 2 * kPi * 1000.0;
+  EXPECT_FALSE(fallback.solve(omega).mirror_split());
+  const EquivalentSources full(unpaired_sources, surface, normals, true, kAir, EquivalentSources::Symmetry::none);
+  Eigen::Matrix3Xd receiver(3, 1);
+  receiver << 0.5, 0.2, 0.1;
+  EXPECT_EQ(relative_difference(fallback.transfer(omega, receiver), full.transfer(omega, receiver)), 0.0);
+}
+
+TEST(EquivalentSources, MirrorPairingOfPointsOnAndOffThePlane) {
+  Eigen::Matrix3Xd p(3, 5);
+  p << 1.0, 2.0, 1.0, 3.0, 2.0,  //
+      0.5, 0.0, -0.5, 0.0, 0.0,  //
+      1.0, 1.0, 1.0, 1.0, 2.0;
+  const auto pairing = find_mirror_pairing(p, Eigen::Matrix3Xd(3, 0), 1e-12);
+  ASSERT_TRUE(pairing.has_value());
+  ASSERT_EQ(pairing->pairs.size(), 1u);
+  EXPECT_EQ(pairing->pairs[0], std::make_pair(Eigen::Index{0}, Eigen::Index{2}));  // y > 0 first
+  EXPECT_EQ(pairing->fixed, (std::vector<Eigen::Index>{1, 3, 4}));
+  // The bases are orthonormal: combine inverts even/odd and norms are kept.
+  std::srand(3);
+  const Eigen::MatrixXcd x = Eigen::MatrixXcd::Random(5, 2);
+  const Eigen::MatrixXcd e = pairing->even(x), o = pairing->odd(x);
+  EXPECT_NEAR(e.squaredNorm() + o.squaredNorm(), x.squaredNorm(), 1e-14);
+  EXPECT_LE((pairing->combine(e, o) - x).cwiseAbs().maxCoeff(), 1e-15);
+  // Two points at one mirror position: no one-to-one pairing.
+  Eigen::Matrix3Xd doubled(3, 3);
+  doubled << 1.0, 1.0, 1.0,  //
+      0.5, -0.5, -0.5,       //
+      1.0, 1.0, 1.0;
+  EXPECT_FALSE(find_mirror_pairing(doubled, Eigen::Matrix3Xd(3, 0), 1e-12).has_value());
 }
 
 TEST(EquivalentSources, ErrorFallsWithMoreSources) {
