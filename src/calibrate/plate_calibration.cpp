@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <mutex>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -23,28 +24,51 @@ enum Index : std::size_t {
   count
 };
 
+}  // namespace
+
+// The modal frequencies ω_mn² and ω_mn of the last parameter values, shared by the receptances
+// of all FRFs: every frequency line of every FRF needs them, and they change only when the fit
+// moves the parameters. Guarded by a mutex, so receptances stay safe to evaluate in parallel.
+struct PlateCalibration::ModeCache {
+  std::mutex mutex;
+  std::vector<double> key;   // the parameter values the table is for
+  Eigen::ArrayXXd omega2;    // ω_mn², (M + 1) × N
+  Eigen::ArrayXXd omega_n;   // ω_mn
+};
+
+namespace {
+
 class PlateReceptance : public ReceptanceFunction {
  public:
-  PlateReceptance(const PlateParameters& plate, const FrfPoints& points) {
+  PlateReceptance(const PlateParameters& plate, const FrfPoints& points,
+                  std::shared_ptr<PlateCalibration::ModeCache> cache)
+      : cache_(std::move(cache)) {
     const KroppPlate geometry(plate);
     modal_area_ = geometry.circumference() * plate.width / 2.0;
     // Reduce to one turn first, as KroppPlate does, so cos(k_m·dx) keeps its digits.
     const double dx = std::remainder(points.response.x - points.excitation.x, geometry.circumference());
-    const int modes_x = plate.circumferential_modes;
-    for (int m = 0; m <= modes_x; ++m) {
+    const int columns = plate.circumferential_modes + 1;
+    kx2_.resize(columns);
+    kx4_.resize(columns);
+    c_.resize(columns);
+    for (int m = 0; m < columns; ++m) {
       const double k = geometry.wavenumber_x(m);
-      kx2_.push_back(k * k);
-      kx4_.push_back(k * k * k * k);
-      c_.push_back((m == 0 ? 1.0 : 2.0) * std::cos(k * dx));
+      kx2_[m] = k * k;
+      kx4_[m] = k * k * k * k;
+      c_[m] = (m == 0 ? 1.0 : 2.0) * std::cos(k * dx);
     }
+    c_kx2_ = c_ * kx2_;
+    c_kx4_ = c_ * kx4_;
     for (int n = 1; n <= plate.lateral_modes; ++n) {
       const double k = geometry.wavenumber_y(n);
       const double s = std::sin(k * points.response.y) * std::sin(k * points.excitation.y);
-      if (s == 0.0) continue;
+      if (s == 0.0) continue;  // a node line of the mode: it adds nothing
+      lateral_.push_back(n - 1);
       ky2_.push_back(k * k);
       ky4_.push_back(k * k * k * k);
       s_.push_back(s);
     }
+    plate_ = plate;
   }
 
   std::complex<double> evaluate(std::span<const double> v, double omega, std::complex<double>* gradient,
@@ -54,56 +78,49 @@ class PlateReceptance : public ReceptanceFunction {
     const double omega2 = omega * omega;
     const double modal_mass = mpa * modal_area_;
     const bool derivatives = gradient != nullptr && !wanted.empty();
+    const std::lock_guard<std::mutex> lock(cache_->mutex);
+    update_modes(v);
     // Sums over the modes, real and imaginary parts: α (A), and for the derivatives
     // Σ c s g (G0), Σ c s g k_m² (G2), Σ c s g k_m⁴ (G4), Σ c s g ω_mn² (W), Σ c s e ω_mn (H)
     // with e = 1/u², g = e·(1 + iωη/(2ω_mn)); the k_n powers multiply the lateral sums (Gy2,
-    // Gy4, and Gxy for a_mn = 2 k_m² k_n²).
+    // Gy4, and Gxy for a_mn = 2 k_m² k_n²). Per lateral order the circumferential sums are
+    // Eigen array expressions and dot products (vectorised).
     double A[2] = {}, G0[2] = {}, G2[2] = {}, G4[2] = {}, W[2] = {}, H[2] = {}, Gy2[2] = {}, Gy4[2] = {}, Gxy[2] = {};
-    for (std::size_t n = 0; n < s_.size(); ++n) {
-      const double base = v[bending_y] * ky4_[n] + v[tension_y] * ky2_[n] + v[foundation_stiffness];
-      const double per_kx2 = v[tension_x] + 2.0 * v[bending_xy] * ky2_[n];
-      double a[2] = {}, g0[2] = {}, g2[2] = {}, g4[2] = {}, w[2] = {}, h[2] = {};
-      for (std::size_t m = 0; m < c_.size(); ++m) {
-        const double K = base + per_kx2 * kx2_[m] + v[bending_x] * kx4_[m];
-        const double wn2 = K / mpa;
-        const double wn = std::sqrt(wn2);
-        const double ur = wn2 - omega2;
-        const double ui = omega * eta * wn;
-        const double norm = 1.0 / (ur * ur + ui * ui);
-        const double ir = ur * norm;  // 1/u
-        const double ii = -ui * norm;
-        const double c = c_[m];
-        a[0] += c * ir;
-        a[1] += c * ii;
-        if (!derivatives) continue;
-        const double er = ir * ir - ii * ii;  // e = 1/u²
-        const double ei = 2.0 * ir * ii;
-        const double q = omega * eta / (2.0 * wn);
-        const double gr = c * (er - ei * q);  // c·g
-        const double gi = c * (ei + er * q);
-        g0[0] += gr;
-        g0[1] += gi;
-        g2[0] += gr * kx2_[m];
-        g2[1] += gi * kx2_[m];
-        g4[0] += gr * kx4_[m];
-        g4[1] += gi * kx4_[m];
-        w[0] += gr * wn2;
-        w[1] += gi * wn2;
-        h[0] += c * er * wn;
-        h[1] += c * ei * wn;
+    thread_local Eigen::ArrayXd ir, ii, er, ei, gr, gi;
+    for (std::size_t j = 0; j < s_.size(); ++j) {
+      const auto wn2 = cache_->omega2.col(lateral_[j]);
+      const auto wn = cache_->omega_n.col(lateral_[j]);
+      // 1/u with u = ω_mn² − ω² + iωη·ω_mn.
+      ir = wn2 - omega2;
+      ii = (omega * eta) * wn;
+      const Eigen::ArrayXd norm = (ir.square() + ii.square()).inverse();
+      ir *= norm;
+      ii *= -norm;
+      const double s = s_[j];
+      A[0] += s * (c_ * ir).sum();
+      A[1] += s * (c_ * ii).sum();
+      if (!derivatives) continue;
+      er = ir.square() - ii.square();  // e = 1/u²
+      ei = 2.0 * ir * ii;
+      // g = e·(1 + iq), q = ωη/(2ω_mn)
+      const Eigen::ArrayXd q = (0.5 * omega * eta) / wn;
+      gr = er - ei * q;
+      gi = ei + er * q;
+      const double g0[2] = {(c_ * gr).sum(), (c_ * gi).sum()};
+      const double g2[2] = {(c_kx2_ * gr).sum(), (c_kx2_ * gi).sum()};
+      for (int k = 0; k < 2; ++k) {
+        G0[k] += s * g0[k];
+        G2[k] += s * g2[k];
+        Gy2[k] += s * ky2_[j] * g0[k];
+        Gy4[k] += s * ky4_[j] * g0[k];
+        Gxy[k] += s * 2.0 * ky2_[j] * g2[k];  // a_mn = 2 k_m² k_n²
       }
-      const double s = s_[n];
-      for (int j = 0; j < 2; ++j) {
-        A[j] += s * a[j];
-        G0[j] += s * g0[j];
-        G2[j] += s * g2[j];
-        G4[j] += s * g4[j];
-        W[j] += s * w[j];
-        H[j] += s * h[j];
-        Gy2[j] += s * ky2_[n] * g0[j];
-        Gy4[j] += s * ky4_[n] * g0[j];
-        Gxy[j] += s * 2.0 * ky2_[n] * g2[j];  // a_mn = 2 k_m² k_n²
-      }
+      G4[0] += s * (c_kx4_ * gr).sum();
+      G4[1] += s * (c_kx4_ * gi).sum();
+      W[0] += s * (c_ * gr * wn2).sum();
+      W[1] += s * (c_ * gi * wn2).sum();
+      H[0] += s * (c_ * er * wn).sum();
+      H[1] += s * (c_ * ei * wn).sum();
     }
     const std::complex<double> alpha(A[0] / modal_mass, A[1] / modal_mass);
     if (!derivatives) return alpha;
@@ -144,14 +161,36 @@ class PlateReceptance : public ReceptanceFunction {
   }
 
  private:
+  // ω_mn² = K_mn/m'' for the values `v` (the cache's mutex held).
+  void update_modes(std::span<const double> v) const {
+    PlateCalibration::ModeCache& cache = *cache_;
+    if (cache.key.size() == v.size() && std::equal(v.begin(), v.end(), cache.key.begin())) return;
+    const int columns = plate_.circumferential_modes + 1;
+    cache.omega2.resize(columns, plate_.lateral_modes);
+    const KroppPlate geometry(plate_);
+    for (int n = 1; n <= plate_.lateral_modes; ++n) {
+      const double k = geometry.wavenumber_y(n);
+      const double ky2 = k * k;
+      const double base = v[bending_y] * ky2 * ky2 + v[tension_y] * ky2 + v[foundation_stiffness];
+      const double per_kx2 = v[tension_x] + 2.0 * v[bending_xy] * ky2;
+      cache.omega2.col(n - 1) = (base + per_kx2 * kx2_ + v[bending_x] * kx4_) / v[mass_per_area];
+    }
+    cache.omega_n = cache.omega2.sqrt();
+    cache.key.assign(v.begin(), v.end());
+  }
+
+  std::shared_ptr<PlateCalibration::ModeCache> cache_;
+  PlateParameters plate_;
   double modal_area_ = 0.0;  // L·b/2: the modal mass is m''·L·b/2
-  std::vector<double> kx2_, kx4_, c_;
-  std::vector<double> ky2_, ky4_, s_;  // lateral orders with s_n ≠ 0 only
+  Eigen::ArrayXd kx2_, kx4_, c_, c_kx2_, c_kx4_;
+  std::vector<Eigen::Index> lateral_;  // lateral orders (n − 1) with s_n ≠ 0
+  std::vector<double> ky2_, ky4_, s_;
 };
 
 }  // namespace
 
-PlateCalibration::PlateCalibration(const PlateParameters& plate) : plate_(plate) {
+PlateCalibration::PlateCalibration(const PlateParameters& plate)
+    : plate_(plate), cache_(std::make_shared<ModeCache>()) {
   const KroppPlate check(plate_);  // validates
   parameters_.resize(count);
   parameters_[mass_per_area] = log_parameter("mass_per_area", "kg/m^2", plate.mass_per_area);
@@ -183,7 +222,7 @@ std::unique_ptr<ReceptanceFunction> PlateCalibration::receptance(const FrfPoints
   FrfPoints clamped = points;
   clamped.response.y = std::clamp(points.response.y, 0.0, plate_.width);
   clamped.excitation.y = std::clamp(points.excitation.y, 0.0, plate_.width);
-  return std::make_unique<PlateReceptance>(plate_, clamped);
+  return std::make_unique<PlateReceptance>(plate_, clamped, cache_);
 }
 
 double PlateCalibration::highest_frequency_hz() const {

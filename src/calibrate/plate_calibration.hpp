@@ -16,6 +16,8 @@
 // foundation_stiffness, loss_factor. Geometry (radius, width) and mode counts stay as in the
 // file. The tread's local compliance is not part of the fit: a transducer on the tread sees
 // the belt through it, which matters only where the tread's own resonances begin (kHz).
+#include <memory>
+
 #include "calibrate/calibration_model.hpp"
 #include "greens/kropp_plate.hpp"
 
@@ -39,9 +41,12 @@ class PlateCalibration : public CalibrationModel {
   // The plate with `values` (one per parameters()) in place of the file's.
   PlateParameters with_values(std::span<const double> values) const;
 
+  struct ModeCache;
+
  private:
   PlateParameters plate_;
   std::vector<FitParameter> parameters_;
+  std::shared_ptr<ModeCache> cache_;  // modal frequencies of the last values, shared by the receptances
 };
 
 }  // namespace rollnoise
