@@ -6,6 +6,7 @@
 #include <random>
 #include <sstream>
 
+#include <Eigen/Eigenvalues>
 #include <ceres/ceres.h>
 
 #include "calibrate/band_weights.hpp"
@@ -342,24 +343,25 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
     for (std::size_t i = 0; i < lines.size(); ++i)
       weighted.AddResidualBlock(lines[i].residual.get(), new ceres::ScaledLoss(nullptr, v[i], ceres::TAKE_OWNERSHIP),
                                 x.data());
+    // Rank: Ceres' own test for DENSE_SVD (σ_min/σ_max of the weighted Jacobian below
+    // √1e-14), taken here so that Ceres does not log an error for data that leave a direction
+    // undetermined; the covariance is then its pseudo-inverse.
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    for (std::size_t i = 0; i < lines.size(); ++i) A += v[i] * (J[i].transpose() * J[i]);
+    const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+    constexpr double min_reciprocal_condition = 1e-14;
+    result.full_rank = eigenvalues.minCoeff() > min_reciprocal_condition * eigenvalues.maxCoeff();
     ceres::Covariance::Options options;
     options.algorithm_type = ceres::DENSE_SVD;
+    options.min_reciprocal_condition_number = min_reciprocal_condition;
+    options.null_space_rank = -1;  // drop the directions below the threshold (none when of full rank)
     options.num_threads = 1;
     const std::vector<std::pair<const double*, const double*>> blocks = {{x.data(), x.data()}};
-    {
-      ceres::Covariance covariance(options);
-      result.full_rank = covariance.Compute(blocks, &weighted);
-      if (result.full_rank) covariance.GetCovarianceBlock(x.data(), x.data(), C.data());
-    }
-    if (!result.full_rank) {
-      // The Moore-Penrose pseudo-inverse: directions the data do not determine are dropped.
-      options.null_space_rank = -1;
-      ceres::Covariance covariance(options);
-      if (covariance.Compute(blocks, &weighted))
-        covariance.GetCovarianceBlock(x.data(), x.data(), C.data());
-      else
-        C.setConstant(std::numeric_limits<double>::quiet_NaN());
-    }
+    ceres::Covariance covariance(options);
+    if (covariance.Compute(blocks, &weighted))
+      covariance.GetCovarianceBlock(x.data(), x.data(), C.data());
+    else
+      C.setConstant(std::numeric_limits<double>::quiet_NaN());
     C.transposeInPlace();  // row-major from Ceres; symmetric anyway
   }
   // The sandwich C·(Jᵀ V² J)·C·σ²: the weights are not inverse variances, so the plain

@@ -17,6 +17,7 @@
 
 #include "calibrate/band_weights.hpp"
 #include "calibrate/calibration.hpp"
+#include "calibrate/greens_model_calibration.hpp"
 #include "calibrate/plate_calibration.hpp"
 #include "calibrate/sdof_calibration.hpp"
 #include "calibrate/synthetic_frf.hpp"
@@ -254,6 +255,29 @@ TEST(Calibration, DataThatCannotTellParametersApartGetWarnings) {
   EXPECT_GT(fitted(r, "damping").log_std_error, 0.2);
   EXPECT_LT(fitted(r, "contact_stiffness").log_std_error, 0.01) << "the contact spring is still well determined";
   EXPECT_EQ(r.frfs[0].left_out, 399) << "the lines below 200 Hz are left out";
+}
+
+TEST(Calibration, AParameterTheReceptanceIgnoresMakesTheCovarianceRankDeficient) {
+  // Through the generic GreensModel path every positive key is a parameter, the contact points'
+  // spacing too, though the receptance does not depend on it: a direction the data cannot
+  // determine at all.
+  toml::table file;
+  file.insert("model", "coupled_sdof");
+  file.insert("mass", 1.0);
+  file.insert("damping", 50.0);
+  file.insert("stiffness", 500.0);
+  file.insert("contact_stiffness", 1e5);
+  file.insert("coupling", 0.4);
+  file.insert("spacing", 0.01);
+  const GreensModelCalibration model(file, "generic.toml");
+  CalibrationSettings settings;
+  settings.free = {"mass", "spacing"};
+  settings.starts = 1;
+  const CalibrationResult r = calibrate(model, {sdof_measurement(8)}, settings);
+  EXPECT_FALSE(r.full_rank);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_TRUE(contains(r.warnings[0], "the covariance is rank-deficient")) << r.warnings[0];
+  EXPECT_NEAR(fitted(r, "mass").value, 1.0, 0.05) << "the determined parameter is still found";
 }
 
 TEST(Calibration, BadSettingsAndDataAreInputErrors) {
