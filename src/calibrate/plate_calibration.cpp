@@ -86,14 +86,22 @@ class PlateReceptance : public ReceptanceFunction {
     // Gy4, and Gxy for a_mn = 2 k_m² k_n²). Per lateral order the circumferential sums are
     // Eigen array expressions and dot products (vectorised).
     double A[2] = {}, G0[2] = {}, G2[2] = {}, G4[2] = {}, W[2] = {}, H[2] = {}, Gy2[2] = {}, Gy4[2] = {}, Gxy[2] = {};
-    thread_local Eigen::ArrayXd ir, ii, er, ei, gr, gi;
+    thread_local Eigen::ArrayXd ir, ii, er, ei, gr, gi, norm, q;
+    // Only the sums the wanted derivatives need.
+    bool need_w = false, need_h = false, need_g4 = false;
+    if (derivatives)
+      for (std::size_t k : wanted) {
+        need_w = need_w || k == mass_per_area;
+        need_h = need_h || k == loss_factor;
+        need_g4 = need_g4 || k == bending_x;
+      }
     for (std::size_t j = 0; j < s_.size(); ++j) {
       const auto wn2 = cache_->omega2.col(lateral_[j]);
       const auto wn = cache_->omega_n.col(lateral_[j]);
       // 1/u with u = ω_mn² − ω² + iωη·ω_mn.
       ir = wn2 - omega2;
       ii = (omega * eta) * wn;
-      const Eigen::ArrayXd norm = (ir.square() + ii.square()).inverse();
+      norm = (ir.square() + ii.square()).inverse();
       ir *= norm;
       ii *= -norm;
       const double s = s_[j];
@@ -103,7 +111,7 @@ class PlateReceptance : public ReceptanceFunction {
       er = ir.square() - ii.square();  // e = 1/u²
       ei = 2.0 * ir * ii;
       // g = e·(1 + iq), q = ωη/(2ω_mn)
-      const Eigen::ArrayXd q = (0.5 * omega * eta) / wn;
+      q = (0.5 * omega * eta) / wn;
       gr = er - ei * q;
       gi = ei + er * q;
       const double g0[2] = {(c_ * gr).sum(), (c_ * gi).sum()};
@@ -115,12 +123,18 @@ class PlateReceptance : public ReceptanceFunction {
         Gy4[k] += s * ky4_[j] * g0[k];
         Gxy[k] += s * 2.0 * ky2_[j] * g2[k];  // a_mn = 2 k_m² k_n²
       }
-      G4[0] += s * (c_kx4_ * gr).sum();
-      G4[1] += s * (c_kx4_ * gi).sum();
-      W[0] += s * (c_ * gr * wn2).sum();
-      W[1] += s * (c_ * gi * wn2).sum();
-      H[0] += s * (c_ * er * wn).sum();
-      H[1] += s * (c_ * ei * wn).sum();
+      if (need_g4) {
+        G4[0] += s * (c_kx4_ * gr).sum();
+        G4[1] += s * (c_kx4_ * gi).sum();
+      }
+      if (need_w) {
+        W[0] += s * (c_ * gr * wn2).sum();
+        W[1] += s * (c_ * gi * wn2).sum();
+      }
+      if (need_h) {
+        H[0] += s * (c_ * er * wn).sum();
+        H[1] += s * (c_ * ei * wn).sum();
+      }
     }
     const std::complex<double> alpha(A[0] / modal_mass, A[1] / modal_mass);
     if (!derivatives) return alpha;

@@ -378,11 +378,15 @@ int run_calibrate(CalibrateOptions options) {
   settings.seed = options.seed;
   settings.loss_scale = options.loss_scale;
   parse_frequency_range(options.frequency_range, settings);
-  // Each Ceres iteration as a step (ProgressReporter looks at every 256th count).
+  // Progress by starts; within a start, iteration i counts as i/(i + 10) of it (how many
+  // iterations a start takes is not known ahead). ProgressReporter looks at every 256th count.
+  constexpr std::size_t steps_per_start = 1000;
   ProgressReporter progress("calibrate " + fs::path(options.model).filename().string(),
-                            static_cast<std::size_t>(settings.starts * settings.max_iterations) * 256);
-  settings.progress = [&progress, &settings](int start, int, int iteration) {
-    progress.update(static_cast<std::size_t>(start * settings.max_iterations + iteration) * 256);
+                            static_cast<std::size_t>(settings.starts) * steps_per_start * 256);
+  settings.progress = [&progress](int start, int, int iteration) {
+    const double within = static_cast<double>(iteration) / (static_cast<double>(iteration) + 10.0);
+    const auto step = static_cast<std::size_t>((static_cast<double>(start) + within) * steps_per_start);
+    progress.update(step * 256);
   };
   const CalibrationResult result = calibrate(*model, data, settings);
   progress.finish();
