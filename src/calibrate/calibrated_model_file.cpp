@@ -1,5 +1,6 @@
 #include "calibrate/calibrated_model_file.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -48,10 +49,17 @@ bool replace_on_its_line(std::vector<std::string>& lines, const std::string& key
   std::string& line = lines[at_line];
   std::string replaced = line.substr(0, value_begin);
   replaced += value;
-  // Keep a trailing comment in its column where the new value leaves room.
+  // Keep a trailing comment in its column where the blanks before it leave room.
   const std::size_t old_length = value_end - value_begin;
-  if (value_end < line.size() && value.size() < old_length) replaced.append(old_length - value.size(), ' ');
-  replaced += line.substr(value_end);
+  std::string rest = line.substr(value_end);
+  if (value.size() < old_length && !rest.empty()) {
+    replaced.append(old_length - value.size(), ' ');
+  } else if (value.size() > old_length) {
+    const std::size_t blanks = rest.find_first_not_of(' ');
+    if (blanks != std::string::npos && blanks > 1)
+      rest.erase(0, std::min(blanks - 1, value.size() - old_length));
+  }
+  replaced += rest;
   line = replaced;
   return true;
 }

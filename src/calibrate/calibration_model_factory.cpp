@@ -12,6 +12,11 @@ namespace rollnoise {
 
 std::unique_ptr<CalibrationModel> make_calibration_model(const CaseFile& model_file) {
   const ConfigTable top = model_file.top();
+  if (!top.contains("model") && model_file.has_section("tyre"))
+    top.fail("tyre",
+             "calibrate takes a model file (the keys of a [tyre] table at the top level, such as "
+             "models/tyres/*.toml), not a case file: calibrate the model file its [tyre] table names, or move the "
+             "[tyre] keys to a file of their own");
   if (!top.contains("model"))
     top.fail("model", "is required: \"sdof\", \"coupled_sdof\", \"plate\" (or another model of a [tyre] table)");
   const std::string model = top.text("model");

@@ -345,6 +345,10 @@ TEST(CalibrateCli, BadDataIsOneMessageAndExitStatusTwo) {
                    "--frequency-range: 100: expected LO:HI in Hz");
   expect_bad_input(ws, {sdof, "--data", "missing.csv"}, "missing.csv: file not found");
   expect_bad_input(ws, {"missing.toml", "--data", data("sdof_point_mobility.csv")}, "missing.toml");
+  expect_bad_input(ws,
+                   {(source_dir / "models" / "cases" / "larsson2000_sdof_sine.toml").string(), "--data",
+                    data("sdof_point_mobility.csv")},
+                   "larsson2000_sdof_sine.toml: tyre: calibrate takes a model file");
 }
 
 TEST(CalibrateCli, HelpAndVerbs) {
