@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -88,10 +89,11 @@ class Workspace {
   fs::path work() const { return root_ / "work"; }
   fs::path path(const std::string& name) const { return work() / name; }
 
-  RunResult run(const std::vector<std::string>& args) const {
+  // Runs the program in work() with CI=true (or without CI when `ci` is false).
+  RunResult run(const std::vector<std::string>& args, bool ci = true) const {
     std::string command = "cd ";
     command += shell_quote(work().string());
-    command += " && CI=true ";
+    command += ci ? " && CI=true " : " && env -u CI ";
     command += shell_quote(ROLLNOISE_BINARY);
     for (const auto& arg : args) {
       command += ' ';
@@ -349,6 +351,40 @@ TEST(CalibrateCli, BadDataIsOneMessageAndExitStatusTwo) {
                    {(source_dir / "models" / "cases" / "larsson2000_sdof_sine.toml").string(), "--data",
                     data("sdof_point_mobility.csv")},
                    "larsson2000_sdof_sine.toml: tyre: calibrate takes a model file");
+}
+
+TEST(CalibrateCli, ProgressOnATerminalOnly) {
+  Workspace ws;
+  // stderr a file, CI unset: no progress.
+  const RunResult quiet = ws.run({"calibrate", model("passenger_205_55R16.toml"), "--data",
+                                  data("tyre_point_mobility.csv"), data("tyre_transfer_mobility.csv"), "--starts", "2",
+                                  "--frequency-range", "20:1500", "--out", "quiet"},
+                                 false);
+  ASSERT_EQ(quiet.status, 0) << describe(quiet);
+  EXPECT_EQ(quiet.err, "");
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs script(1) for a terminal";
+  if (std::system("script -qec true /dev/null >/dev/null 2>&1") != 0) GTEST_SKIP() << "no pseudo-terminal here";
+  std::string inner = "env -u CI ";
+  inner += shell_quote(ROLLNOISE_BINARY);
+  for (const std::string& arg : {std::string("calibrate"), model("passenger_205_55R16.toml"), std::string("--data"),
+                                 data("tyre_point_mobility.csv"), data("tyre_transfer_mobility.csv"),
+                                 std::string("--starts"), std::string("2"), std::string("--frequency-range"),
+                                 std::string("20:1500"), std::string("--out"), std::string("shown")}) {
+    inner += ' ';
+    inner += shell_quote(arg);
+  }
+  std::string command = "cd ";
+  command += shell_quote(ws.work().string());
+  command += " && script -qec ";
+  command += shell_quote(inner);
+  command += " /dev/null > ../terminal.txt 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string shown = read_text(ws.work() / ".." / "terminal.txt");
+  if (seconds < 1.5) GTEST_SKIP() << "the run took only " << seconds << " s on this machine";
+  EXPECT_TRUE(contains(shown, "calibrate passenger_205_55R16.toml:")) << shown;
+  EXPECT_TRUE(contains(shown, "done in")) << shown;
 }
 
 TEST(CalibrateCli, HelpAndVerbs) {
