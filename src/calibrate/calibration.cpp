@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <sstream>
 
@@ -159,6 +160,19 @@ PreparedFrf prepare(const CalibrationModel& model, const MeasuredFrf& frf, const
   } catch (const InputError& e) {
     if (!e.source().empty()) throw;
     throw InputError(frf.source, frf.label.empty() ? "positions" : frf.label + ", positions", e.problem());
+  }
+  // A receptance that is 0 whatever the parameters has no logarithm to fit.
+  std::vector<double> file_values;
+  for (const auto& p : layout.parameters) file_values.push_back(p.value);
+  const double probe = 2.0 * std::numbers::pi * std::clamp(frf.frequency_hz[0], std::max(lo, 1e-3), hi);
+  if (prepared.transfer->evaluate(file_values, probe, nullptr, {}) == 0.0) {
+    std::ostringstream problem;
+    problem << "the " << model.name() << " model's receptance from (" << out.points.excitation.x << ", "
+            << out.points.excitation.y << ") m to (" << out.points.response.x << ", " << out.points.response.y
+            << ") m is 0 with the model file's values: a simply supported belt edge (y = 0 or y = width) does not "
+               "move, and a coupling of 0 transmits nothing; measure inside the belt, or start the coupling from a "
+               "non-zero value";
+    throw InputError(frf.source, frf.label.empty() ? "positions" : frf.label + ", positions", problem.str());
   }
   std::vector<Eigen::Index> lines;
   for (Eigen::Index k = 0; k < frf.size(); ++k)

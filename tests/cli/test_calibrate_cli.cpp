@@ -337,6 +337,10 @@ TEST(CalibrateCli, BadDataIsOneMessageAndExitStatusTwo) {
   write_text(ws.path("nowhere.csv"), "frequency_hz,re,im\n100,1e-3,1e-3\n");
   expect_bad_input(ws, {model("passenger_205_55R16.toml"), "--data", "nowhere.csv"},
                    "nowhere.csv: a plate FRF needs the response and excitation positions");
+  expect_bad_input(ws, {model("passenger_205_55R16.toml"), "--data", "nowhere.csv", "--response", "0,0", "--excitation",
+                        "0,0.09"},
+                   "nowhere.csv: positions: the plate model's receptance from (0, 0.09) m to (0, 0) m is 0 with the "
+                   "model file's values: a simply supported belt edge");
   expect_bad_input(ws, {model("passenger_205_55R16.toml"), "--data", data("tyre_frfs.uff"), "--node", "1=0,0.09"},
                    "node 2 has no position: give --node 2=X,Y");
   // Settings.
