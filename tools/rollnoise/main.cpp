@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "analyse_command.hpp"
+#include "calibrate_command.hpp"
 #include "simulate_command.hpp"
 
 namespace {
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
   CLI::App* simulate_cmd = rollnoise::add_simulate_command(app, simulate);
   rollnoise::AnalyseOptions analyse;
   CLI::App* analyse_cmd = rollnoise::add_analyse_command(app, analyse);
+  rollnoise::CalibrateOptions calibrate;
+  CLI::App* calibrate_cmd = rollnoise::add_calibrate_command(app, calibrate);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -40,7 +43,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -53,6 +56,7 @@ int main(int argc, char** argv) {
   try {
     if (simulate_cmd->parsed()) return rollnoise::run_simulate(simulate);
     if (analyse_cmd->parsed()) return rollnoise::run_analyse(analyse);
+    if (calibrate_cmd->parsed()) return rollnoise::run_calibrate(calibrate);
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;
