@@ -1,5 +1,6 @@
 #include "tyre_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -122,10 +123,28 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   Eigen::MatrixXd u(across, around), v(across, around);
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> slice(across, around);
   std::vector<double> revolution;
+  // The belt cell under each contact point (index j + Ny·g of the belt field): the tread there
+  // is held against the road and does not radiate (below).
+  std::vector<Eigen::Index> cell_under(static_cast<std::size_t>(grid.points()));
+  for (int j = 0; j < grid.lateral; ++j) {
+    const int row = std::clamp(static_cast<int>(grid.y(j) / (grid.width / across)), 0, across - 1);
+    for (int i = 0; i < grid.window; ++i)
+      cell_under[static_cast<std::size_t>(i + grid.window * j)] = row + static_cast<Eigen::Index>(across) * grid.grid_index(i);
+  }
+  Eigen::VectorXd radiating(static_cast<Eigen::Index>(across) * around);
   if (tread_velocity) tread_velocity->resize(static_cast<Eigen::Index>(samples), sampling->rows());
   for (std::size_t n = 0; n < samples; ++n) {
     response.step(t.force.row(static_cast<Eigen::Index>(n)).transpose(), u, v);
-    if (tread_velocity) tread_velocity->row(static_cast<Eigen::Index>(n)) = (*sampling * v.reshaped()).transpose();
+    if (tread_velocity) {
+      // The radiating velocity leaves out the cells in contact: the road holds the tread there,
+      // and what the tread displaces escapes only through the texture's channels (air pumping,
+      // not modelled). Left in, the contact patch would pump into the mesh's 2 mm clearance and
+      // be amplified by the very horn the mesh resolves.
+      radiating = v.reshaped();
+      for (std::size_t p = 0; p < cell_under.size(); ++p)
+        if (t.force(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p)) > 0.0) radiating(cell_under[p]) = 0.0;
+      tread_velocity->row(static_cast<Eigen::Index>(n)) = (*sampling * radiating).transpose();
+    }
     slice = u.cast<float>();
     displacement->append(slice.data());
     slice = v.cast<float>();
