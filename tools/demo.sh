@@ -15,6 +15,12 @@ for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
 
+# Calibration (issue 5): the tyre model fitted to the synthetic example mobilities in
+# data/mobility, giving a model file any tyre case can roll with (--set tyre.file=...).
+build/tools/rollnoise/rollnoise calibrate models/tyres/passenger_205_55R16.toml \
+  --data data/mobility/tyre_point_mobility.csv data/mobility/tyre_transfer_mobility.csv \
+  --out "$out/calibrated_tyre"
+
 # The paper's Fig. 3, 4a and 4b, drawn from the runs' CSV files; each script stays beside
 # its PNG so it can be restyled and redrawn.
 mkdir -p "$out/figures"

@@ -357,7 +357,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
       "    --data data/mobility/tyre_point_mobility.csv data/mobility/tyre_transfer_mobility.csv \\\n"
       "    --fit tension_x,bending_x,foundation_stiffness,loss_factor --out out/calibrated\n"
       "Then: rollnoise simulate CASE.toml --set tyre.file=out/calibrated/calibrated.toml\n"
-      "See docs/calibration.md.");
+      "See the Calibration section of README.md.");
   cmd->callback([cmd, &options] { options.data_type_given = cmd->count("--data-type") > 0; });
   return cmd;
 }
