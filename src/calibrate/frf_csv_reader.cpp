@@ -15,21 +15,6 @@
 namespace rollnoise {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::string printable(std::string_view text) {
-  std::string out;
-  for (char c : text.substr(0, 40)) {
-    const auto u = static_cast<unsigned char>(c);
-    out += (u >= 0x20 && u < 0x7f) ? c : '?';
-  }
-  return out;
-}
-
 std::string line_name(std::size_t number) { return "line " + std::to_string(number); }
 
 // The lines of the text as parse_numeric_csv sees them: the line numbers of the data rows (the
@@ -60,17 +45,17 @@ CsvLayout scan_layout(const std::string& text, const std::string& source) {
     pos = end == std::string::npos ? text.size() : end + 1;
     ++number;
     if (number == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
-    const std::string_view content = trim(line);
+    const std::string_view content = trim_blanks(line);
     if (content.empty()) continue;
     if (content.front() != '#') {
       if (header_seen) layout.data_lines.push_back(number);
       header_seen = true;
       continue;
     }
-    const std::string_view comment = trim(content.substr(1));
+    const std::string_view comment = trim_blanks(content.substr(1));
     const auto equals = comment.find('=');
     if (equals == std::string_view::npos) continue;
-    const std::string_view key = trim(comment.substr(0, equals));
+    const std::string_view key = trim_blanks(comment.substr(0, equals));
     bool known = false;
     for (const auto& k : setting_keys()) known = known || key == k;
     if (!known) continue;  // free text such as "# generated with mass = 1 kg"
@@ -78,7 +63,7 @@ CsvLayout scan_layout(const std::string& text, const std::string& source) {
       throw InputError(source, line_name(number),
                        "'" + std::string(key) + "' is given twice (first on line " +
                            std::to_string(layout.settings.find(key)->second.line) + ")");
-    std::string_view value = trim(comment.substr(equals + 1));
+    std::string_view value = trim_blanks(comment.substr(equals + 1));
     if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
     layout.settings.emplace(std::string(key), CsvLayout::Setting{std::string(value), number});
   }
@@ -96,7 +81,7 @@ std::optional<double> position_setting(const CsvLayout& layout, const std::strin
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
     throw InputError(source, line_name(it->second.line) + ", " + key,
-                     "\"" + printable(text) + "\" is not a finite number (a position in m)");
+                     "\"" + printable_excerpt(text) + "\" is not a finite number (a position in m)");
   return value;
 }
 
@@ -121,7 +106,7 @@ FrfQuantity quantity(const CsvLayout& layout, const FrfReadOptions& options, con
   const std::string where = line_name(it->second.line) + ", data_type";
   if (!parsed)
     throw InputError(source, where,
-                     "\"" + printable(it->second.value) + "\" is not a quantity calibrate fits; allowed: " +
+                     "\"" + printable_excerpt(it->second.value) + "\" is not a quantity calibrate fits; allowed: " +
                          frf_quantity_choices() + " (motion over force)");
   if (options.quantity_given && *parsed != options.quantity)
     throw InputError(source, where,

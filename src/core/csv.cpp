@@ -12,34 +12,34 @@
 namespace rollnoise {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t start = 0;
   while (true) {
     const auto comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+    fields.push_back(trim_blanks(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
   return fields;
 }
 
-std::string printable(std::string_view field) {
+}  // namespace
+
+std::string_view trim_blanks(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::string printable_excerpt(std::string_view text) {
   std::string out;
-  for (char c : field.substr(0, 40)) {
+  for (char c : text.substr(0, 40)) {
     const auto u = static_cast<unsigned char>(c);
     out += (u >= 0x20 && u < 0x7f) ? c : '?';
   }
   return out;
 }
-
-}  // namespace
 
 std::size_t NumericCsv::column(const std::string& name, const std::string& source) const {
   for (std::size_t i = 0; i < header.size(); ++i)
@@ -60,7 +60,7 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source)
     pos = end == std::string::npos ? text.size() : end + 1;
     ++line_number;
     if (line_number == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // BOM
-    const std::string_view content = trim(line);
+    const std::string_view content = trim_blanks(line);
     if (content.empty()) continue;
     if (content.front() == '#') {
       csv.comments.emplace_back(content.substr(1));
@@ -71,7 +71,7 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source)
     if (!have_header) {
       for (auto field : fields) {
         if (field.empty()) throw InputError(source, where, "empty column name in the header");
-        csv.header.emplace_back(printable(field));
+        csv.header.emplace_back(printable_excerpt(field));
       }
       csv.columns.resize(csv.header.size());
       have_header = true;
@@ -91,11 +91,11 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source)
       const auto [ptr, ec] = std::from_chars(first, last, value);
       if (field.empty() || ec != std::errc() || ptr != last) {
         throw InputError(source, where + ", column \"" + csv.header[c] + "\"",
-                         "\"" + printable(field) + "\" is not a number");
+                         "\"" + printable_excerpt(field) + "\" is not a number");
       }
       if (!std::isfinite(value)) {
         throw InputError(source, where + ", column \"" + csv.header[c] + "\"",
-                         "must be a finite number (got " + printable(field) + ")");
+                         "must be a finite number (got " + printable_excerpt(field) + ")");
       }
       csv.columns[c].push_back(value);
     }

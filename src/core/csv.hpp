@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rollnoise {
@@ -22,6 +23,12 @@ struct NumericCsv {
 // Parses CSV text; `source` names it in messages. Non-finite values are rejected.
 NumericCsv parse_numeric_csv(const std::string& text, const std::string& source);
 NumericCsv read_numeric_csv(const std::filesystem::path& path);
+
+// `text` without leading and trailing blanks, tabs and carriage returns.
+std::string_view trim_blanks(std::string_view text);
+// The first 40 bytes of `text` with anything but printable ASCII shown as '?': for quoting
+// untrusted input in a message.
+std::string printable_excerpt(std::string_view text);
 
 // The shortest text that reads back as exactly the same double.
 std::string format_number(double value);
