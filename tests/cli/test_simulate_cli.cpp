@@ -390,6 +390,8 @@ TEST(SimulateCli, PlateTyreBadSoundSettingsAreNamed) {
       {{"radiation", "receivers", "[{name = \"in\", x = 0.0, y = 0.0, z = 0.3}]"}, {"[radiation] receivers", "inside the tyre"}},
       {{"radiation", "receivers", "[\"cpx_middle\"]"}, {"[radiation] receivers", "cpx_middle", "cpx_front"}},
       {{"output", "audio_rate", "22050"}, {"[output] audio_rate", "48000 or 44100"}},
+      {{"radiation", "receivers", "[{name = \"spb_passby\", x = 1.0, y = 2.0, z = 1.0}]"},
+       {"[radiation] receivers", "spb_passby", "pass-by"}},
       {{"output", "wav_duration", "2.0"}, {"[output] wav_duration"}},
       {{"output", "wav", "\"yes\""}, {"[output] wav"}},
   };

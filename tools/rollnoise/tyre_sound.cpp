@@ -78,6 +78,8 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
   s.radiation.threads = static_cast<int>(radiation.integer("threads", 0, 0, 1024));
   radiation.reject_unknown_keys();
   for (const Receiver& r : s.receivers) {
+    if (r.name == "spb_passby")
+      radiation.fail("receivers", "\"spb_passby\" is the name of the pass-by at the spb microphone; choose another name");
     // The body: a cylinder of the tyre's radius on the axle (mesh coordinates).
     const double axle = radius + s.radiation.mesh.clearance;
     const double from_axis = std::hypot(r.position.x(), r.position.z() - axle);
