@@ -27,8 +27,10 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "simulate",
       "Roll a tyre model over a road: contact forces and displacements at every time step.\n"
-      "Writes contact.csv, summary.json and contact.png (with its gnuplot script contact.gp).");
-  cmd->add_option("case", options.case_file, "Case file (TOML) with [tyre], [road], [rolling], [output]")
+      "Writes contact.csv, summary.json and plots (PNG with their gnuplot scripts). Tyre (plate)\n"
+      "cases also write contact.h5 and the sound at the CPX and SPB microphones: spectrum.csv,\n"
+      "levels in summary.json, sound_power.csv and <receiver>.wav (with spb_passby.wav).");
+  cmd->add_option("case", options.case_file, "Case file (TOML) with [tyre], [road], [rolling], [radiation], [output]")
       ->required();
   cmd->add_option("--out", options.out,
                   "Output folder (default: [output] directory, else out/<case name>); written "
