@@ -23,106 +23,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_workspace.hpp"
+
 namespace {
 namespace fs = std::filesystem;
 
 const fs::path source_dir{ROLLNOISE_SOURCE_DIR};
 const fs::path mobility = source_dir / "data" / "mobility";
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-std::string shell_quote(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  out += "'";
-  return out;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-struct RunResult {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string describe(const RunResult& r) {
-  std::ostringstream s;
-  s << "exit status " << r.status << "\n--- stderr ---\n" << r.err << "--- stdout ---\n" << r.out;
-  return s.str();
-}
-
-// A fresh folder per test; the program runs in work(), its output is captured beside it.
-class Workspace {
- public:
-  Workspace() {
-    static std::atomic<int> counter{0};
-    std::string name = "rollnoise_calibrate_";
-    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) name += info->name();
-    for (char& c : name)
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
-    name += '_';
-    name += std::to_string(::getpid());
-    name += '_';
-    name += std::to_string(counter++);
-    root_ = fs::temp_directory_path() / name;
-    fs::remove_all(root_);
-    fs::create_directories(root_ / "work");
-  }
-  ~Workspace() {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
-  }
-  Workspace(const Workspace&) = delete;
-  Workspace& operator=(const Workspace&) = delete;
-
-  fs::path work() const { return root_ / "work"; }
-  fs::path path(const std::string& name) const { return work() / name; }
-
-  // Runs the program in work() with CI=true (or without CI when `ci` is false).
-  RunResult run(const std::vector<std::string>& args, bool ci = true) const {
-    std::string command = "cd ";
-    command += shell_quote(work().string());
-    command += ci ? " && CI=true " : " && env -u CI ";
-    command += shell_quote(ROLLNOISE_BINARY);
-    for (const auto& arg : args) {
-      command += ' ';
-      command += shell_quote(arg);
-    }
-    command += " </dev/null >";
-    command += shell_quote((root_ / "stdout.txt").string());
-    command += " 2>";
-    command += shell_quote((root_ / "stderr.txt").string());
-    const int raw = std::system(command.c_str());
-    RunResult result;
-    if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
-    result.out = read_text(root_ / "stdout.txt");
-    result.err = read_text(root_ / "stderr.txt");
-    return result;
-  }
-
-  std::set<std::string> entries() const {
-    std::set<std::string> names;
-    for (const auto& entry : fs::recursive_directory_iterator(work()))
-      names.insert(fs::relative(entry.path(), work()).string() + (entry.is_directory() ? "/" : ""));
-    return names;
-  }
-
- private:
-  fs::path root_;
-};
-
-nlohmann::json read_json(const fs::path& path) { return nlohmann::json::parse(read_text(path)); }
+using namespace cli_test;
 
 std::string data(const char* name) { return (mobility / name).string(); }
 std::string model(const char* name) { return (source_dir / "models" / "tyres" / name).string(); }
@@ -363,7 +272,7 @@ TEST(CalibrateCli, ProgressOnATerminalOnly) {
   const RunResult quiet = ws.run({"calibrate", model("passenger_205_55R16.toml"), "--data",
                                   data("tyre_point_mobility.csv"), data("tyre_transfer_mobility.csv"), "--starts", "2",
                                   "--frequency-range", "20:1500", "--out", "quiet"},
-                                 false);
+                                 "env -u CI ");
   ASSERT_EQ(quiet.status, 0) << describe(quiet);
   EXPECT_EQ(quiet.err, "");
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs script(1) for a terminal";
