@@ -55,4 +55,21 @@ MeasuredFrf synthetic_frf(const CalibrationModel& model, const std::vector<doubl
   return frf;
 }
 
+PlateParameters example_tyre_truth() {
+  PlateParameters p;
+  p.radius = 0.316;
+  p.width = 0.18;
+  p.mass_per_area = 12.0;
+  p.tension_x = 5.2e4;
+  p.tension_y = 9.0e3;
+  p.bending_x = 5.5;
+  p.bending_y = 3.0;
+  p.bending_xy = 4.6;
+  p.foundation_stiffness = 2.7e6;
+  p.loss_factor = 0.08;
+  p.circumferential_modes = 256;
+  p.lateral_modes = 25;
+  return p;
+}
+
 }  // namespace rollnoise::testing

@@ -9,6 +9,7 @@
 
 #include "calibrate/calibration_model.hpp"
 #include "calibrate/measured_frf.hpp"
+#include "greens/kropp_plate.hpp"
 
 namespace rollnoise::testing {
 
@@ -31,5 +32,10 @@ std::vector<double> linear_frequencies(double first, double last, double step);
 MeasuredFrf synthetic_frf(const CalibrationModel& model, const std::vector<double>& values, const FrfPoints& points,
                           const std::vector<double>& frequency_hz, double level, NormalSource& noise, double mass = 0.0,
                           const std::string& name = "synthetic");
+
+// The "true" tyre behind data/mobility (data/mobility/README.md): the passenger 205/55 R16 of
+// models/tyres/passenger_205_55R16.toml, with its 256 × 25 modes, and tension_x, bending_x,
+// foundation_stiffness and loss_factor changed from the file's estimates.
+PlateParameters example_tyre_truth();
 
 }  // namespace rollnoise::testing

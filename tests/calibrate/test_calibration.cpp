@@ -352,17 +352,7 @@ TEST(BandWeights, EveryThirdOctaveBandWeighsOne) {
 // plate
 
 PlateParameters plate_truth() {
-  PlateParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.mass_per_area = 12.0;
-  p.tension_x = 5.2e4;
-  p.tension_y = 9.0e3;
-  p.bending_x = 5.5;
-  p.bending_y = 3.0;
-  p.bending_xy = 4.6;
-  p.foundation_stiffness = 2.7e6;
-  p.loss_factor = 0.08;
+  PlateParameters p = testing::example_tyre_truth();
   // Fewer modes than the passenger tyre file (96 and 11 reach 4.2 kHz): quicker, and truth and
   // fit share them, so the truncation is not an error here.
   p.circumferential_modes = 96;

@@ -39,23 +39,7 @@ const fs::path data_dir{ROLLNOISE_SOURCE_DIR "/data/mobility"};
 // The true parameters (data/mobility/README.md lists them).
 SdofParameters sdof_truth() { return {0.8, 40.0, 800.0, 1.5e5}; }
 
-PlateParameters tyre_truth() {
-  // models/tyres/passenger_205_55R16.toml with four values changed.
-  PlateParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.mass_per_area = 12.0;
-  p.tension_x = 5.2e4;
-  p.tension_y = 9.0e3;
-  p.bending_x = 5.5;
-  p.bending_y = 3.0;
-  p.bending_xy = 4.6;
-  p.foundation_stiffness = 2.7e6;
-  p.loss_factor = 0.08;
-  p.circumferential_modes = 256;
-  p.lateral_modes = 25;
-  return p;
-}
+PlateParameters tyre_truth() { return testing::example_tyre_truth(); }
 
 const FrfPoints tyre_point{{0.0, 0.09}, {0.0, 0.09}};
 const FrfPoints tyre_transfer{{0.1, 0.09}, {0.0, 0.09}};
