@@ -111,7 +111,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
                                 "[sample][y][position around]");
   auto velocity = h5.slices("/surface/velocity", samples, static_cast<std::size_t>(across),
                             static_cast<std::size_t>(around), "m/s",
-                            "radial velocity of the belt material at each position [sample][y][position around]");
+                            "radial velocity of the belt surface at each fixed position, du/dt there (what radiates; not the velocity of the material passing it) [sample][y][position around]");
   SurfaceResponse response(plate, t.steady_force, across);
   std::vector<double> angle(static_cast<std::size_t>(around)), lateral(static_cast<std::size_t>(across));
   for (int g = 0; g < around; ++g) angle[static_cast<std::size_t>(g)] = g * grid.dx();
