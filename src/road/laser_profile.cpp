@@ -208,6 +208,7 @@ MeasuredProfile parse_laser_profile(std::string_view text, const std::string& so
                                      std::to_string(end - begin) + " rows)");
   }
   profile.trimmed_points = z.size() - (end - begin);
+  profile.x0_m = x_mm[begin] * 1e-3;
   profile.z_m.assign(z.begin() + static_cast<std::ptrdiff_t>(begin), z.begin() + static_cast<std::ptrdiff_t>(end));
   try {
     const CleaningReport report = clean_profile(profile.z_m, profile.spacing_m);

@@ -36,6 +36,7 @@ struct MeasuredProfile {
   std::size_t dropouts = 0;    // in the kept road part, before cleaning
   std::size_t spikes = 0;      // in the kept road part (see clean_profile)
   std::size_t trimmed_points = 0;  // rows cut off at the two ends (plates, beyond, buffers)
+  double x0_m = 0;             // the file's distance of the first kept row (z_m[0])
 };
 
 // Reads the stationary laser profilometer text format: header block, `*****DATA*****`,
