@@ -44,7 +44,7 @@ struct FftwFree {
 
 // A profile of n points at spacing dx with one-sided PSD G_d(n) = gd_n0 (n/0.1)^-2 for
 // n >= 0.005 cycles/m (0 below: a road has no infinitely long waves): every DFT line k has the
-// amplitude sqrt(2 G_d(n_k) Δn), Δn = 1/(n dx), and a random phase (ISO 8608 Annex F's way).
+// amplitude sqrt(2 G_d(n_k) Δn), Δn = 1/(n dx), and a random phase.
 std::vector<double> synthesise(double gd_n0, std::size_t n, double dx, std::uint64_t seed) {
   std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
   std::unique_ptr<double[], FftwFree> z(fftw_alloc_real(n));
