@@ -44,8 +44,9 @@ class ProfileSurface final : public RoadSurface {
 // Builds the surface of a [road] table. The 1-D types (flat, sine, random, file, cleat, iso8608)
 // give the same profile on every lateral line (a ProfileSurface around make_road_profile, with
 // the same keys and defaults). The 2-D types are "random_surface" (random_surface.hpp),
-// "surface" (a height-map file, height_map_surface.hpp) and "texture" (texture_road.hpp; as a
-// 2-D map, with the keys width and anisotropy). The run looks at x in [x_min, x_max] and y in
+// "surface" (a height-map file, height_map_surface.hpp), "texture" (texture_road.hpp; as a
+// 2-D map, with the keys width and anisotropy) and "aggregate" (aggregate_road.hpp; as a 2-D
+// map, with the key width). The run looks at x in [x_min, x_max] and y in
 // [-half_width, half_width] (half_width >= 0). Unknown keys are rejected; every bad value is an
 // InputError naming "[road] key" in the file that set it, or the data file.
 std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,
