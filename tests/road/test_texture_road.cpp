@@ -37,11 +37,12 @@ std::string list(const std::vector<double>& values) {
 // Nominal band centres from `first` to `last` (m), both included.
 std::vector<double> bands(double first, double last) { return texture_band_nominal_wavelengths(first, last); }
 
-// A texture-like spectrum over 1 mm .. 250 mm: rising 1.5 dB per band to a peak at 31.5 mm, then
-// falling 2 dB per band (not realisable by an isotropic surface; fine for a profile).
+// A texture-like spectrum over the whole ISO 13473-4 band set, 0.5 mm .. 500 mm: rising 1.5 dB
+// per band to a peak at 31.5 mm, then falling 2 dB per band (not realisable by an isotropic
+// surface; fine for a profile).
 Target profile_target() {
   Target t;
-  t.wavelengths = bands(1e-3, 0.25);
+  t.wavelengths = bands(0.5e-3, 0.5);
   double level = 30.0;
   for (double w : t.wavelengths) {
     t.levels.push_back(level);
@@ -89,7 +90,7 @@ TEST(TextureRoad, ProfileReproducesTheBandLevels) {
   const Target t = profile_target();
   BandAverage average;
   for (int seed = 1; seed <= 8; ++seed) {
-    const auto road = test::profile_from(road_table(t, "length = 20.0\nlead_in = 0.0\nseed = " + std::to_string(seed)));
+    const auto road = test::profile_from(road_table(t, "length = 40.0\nlead_in = 0.0\nseed = " + std::to_string(seed)));
     const SampledProfile& p = as_line(*road);
     EXPECT_EQ(p.type(), "texture");
     average.add(p.samples(), p.spacing());
