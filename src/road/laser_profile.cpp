@@ -72,14 +72,20 @@ bool is_dropout(std::string_view text) {
 // dropouts), by the rules of laser_profile.hpp.
 std::pair<std::size_t, std::size_t> road_between_plates(const std::vector<double>& z, double spacing_m) {
   const std::size_t n = z.size();
+  // The road's level: the median of the middle third (plates lie at the ends), or of the whole
+  // record if the middle third saw nothing.
   std::vector<double> valid;
   valid.reserve(n);
-  for (double v : z)
-    if (!std::isnan(v)) valid.push_back(v);
+  for (std::size_t i = n / 3; i < n - n / 3; ++i)
+    if (!std::isnan(z[i])) valid.push_back(z[i]);
+  if (valid.empty()) {
+    for (double v : z)
+      if (!std::isnan(v)) valid.push_back(v);
+  }
   if (valid.empty()) return {0, n};  // all dropouts: clean_profile reports it
   const auto middle = valid.begin() + static_cast<std::ptrdiff_t>(valid.size() / 2);
   std::nth_element(valid.begin(), middle, valid.end());
-  const double median = *middle;
+  const double road_level = *middle;
 
   const auto min_run = std::max<std::size_t>(3, static_cast<std::size_t>(std::ceil(laser_plate_min_run_m / spacing_m)));
   const auto buffer = static_cast<std::size_t>(std::ceil(laser_plate_buffer_m / spacing_m));
@@ -89,7 +95,7 @@ std::pair<std::size_t, std::size_t> road_between_plates(const std::vector<double
   bool plate = false;  // state of the last valid sample (dropouts inherit it)
   std::size_t run_start = 0;
   for (std::size_t i = 0; i <= n; ++i) {
-    const bool now = i < n && (std::isnan(z[i]) ? plate : std::abs(z[i] - median) > laser_plate_min_height_m);
+    const bool now = i < n && (std::isnan(z[i]) ? plate : z[i] - road_level > laser_plate_min_height_m);
     if (now && !plate) run_start = i;
     if (!now && plate && i - run_start >= min_run) {  // a plate run [run_start, i) ends
       if (run_start < n / 2) {
@@ -113,7 +119,8 @@ bool looks_like_laser_profile(std::string_view text) {
   std::size_t pos = 0;
   while (pos < text.size()) {
     if (is_marker(next_line(text, pos))) {
-      const std::string_view header = next_line(text, pos);
+      std::string_view header;
+      while (pos < text.size() && trim_blanks(header).empty()) header = next_line(text, pos);
       return column(header, distance_name).has_value() && column(header, depth_name).has_value();
     }
   }
@@ -208,6 +215,7 @@ MeasuredProfile parse_laser_profile(std::string_view text, const std::string& so
                                      std::to_string(end - begin) + " rows)");
   }
   profile.trimmed_points = z.size() - (end - begin);
+  profile.x0_m = x_mm[begin] * 1e-3;
   profile.z_m.assign(z.begin() + static_cast<std::ptrdiff_t>(begin), z.begin() + static_cast<std::ptrdiff_t>(end));
   try {
     const CleaningReport report = clean_profile(profile.z_m, profile.spacing_m);

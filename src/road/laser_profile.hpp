@@ -17,9 +17,9 @@
 
 namespace rollnoise {
 
-// A sample belongs to a reference plate when its height differs from the median height of the
-// record by more than this (the plates stand ~47 mm proud; road texture and unevenness over
-// a 2 m record stay within about ±10 mm of the median)...
+// A sample belongs to a reference plate when it stands higher than this above the road's level,
+// the median height of the middle third of the record (the plates stand ~47 mm proud; road
+// texture and unevenness over a 2 m record stay within about ±10 mm of the median)...
 inline constexpr double laser_plate_min_height_m = 20e-3;
 // ... and lies in a run of such samples (dropouts taking the state of the valid sample
 // before them) at least this long: an isolated wild value is a spike, not a plate.
@@ -36,6 +36,7 @@ struct MeasuredProfile {
   std::size_t dropouts = 0;    // in the kept road part, before cleaning
   std::size_t spikes = 0;      // in the kept road part (see clean_profile)
   std::size_t trimmed_points = 0;  // rows cut off at the two ends (plates, beyond, buffers)
+  double x0_m = 0;             // the file's distance of the first kept row (z_m[0])
 };
 
 // Reads the stationary laser profilometer text format: header block, `*****DATA*****`,
@@ -48,7 +49,7 @@ MeasuredProfile read_laser_profile(const std::filesystem::path& path);
 MeasuredProfile parse_laser_profile(std::string_view text, const std::string& source);
 
 // True when the text looks like this format (for content-based format detection): within its
-// first 64 KiB a line starting `*****DATA*****`, followed by a column header naming
+// first 64 KiB a line starting `*****DATA*****`, followed (after any blank lines) by a column header naming
 // "Distance (mm)" and "Depth (mm)".
 bool looks_like_laser_profile(std::string_view text);
 

@@ -75,10 +75,13 @@ std::vector<double> mpd_lowpass(std::span<const double> z, double spacing_m) {
   check_spacing(spacing_m);
   if (z.size() < 2) return {z.begin(), z.end()};
   const Biquad filter = butterworth_lowpass(spacing_m, mpd_lowpass_cutoff_m);
-  // Odd reflection about each end over four cut-off wavelengths, where the filter's transient
-  // has decayed (its poles have |p| < 0.7 per 0.5 mm); it continues a line exactly.
-  const auto wanted = static_cast<std::size_t>(std::ceil(4.0 * mpd_lowpass_cutoff_m / spacing_m));
-  const std::size_t pad = std::min(std::max<std::size_t>(wanted, 12), z.size() - 1);
+  // Odd reflection about each end over ten cut-off wavelengths and at least 64 samples, over
+  // which the start-up transient decays (the poles' radius sqrt(a2) is 0.45 at 0.5 mm and 0.69
+  // at 1 mm spacing: 0.69^64 < 1e-10). The reflection continues a line exactly, and a sinusoid
+  // that ends at a zero crossing; elsewhere it leaves a step in curvature, whose filtered
+  // transient reaches a few millimetres into the profile.
+  const auto wanted = static_cast<std::size_t>(std::ceil(10.0 * mpd_lowpass_cutoff_m / spacing_m));
+  const std::size_t pad = std::min(std::max<std::size_t>(wanted, 64), z.size() - 1);
   const std::size_t n = z.size();
   std::vector<double> x(n + 2 * pad);
   for (std::size_t i = 0; i < pad; ++i) {

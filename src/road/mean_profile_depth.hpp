@@ -1,13 +1,14 @@
 #pragma once
 // Mean profile depth (MPD) and estimated texture depth (ETD) of a texture profile,
-// ISO 13473-1:2019.
+// ISO 13473-1:2019. Clause numbers below are those CAPTIF's implementation (captif-slp) cites;
+// the standard's own text was not available to us, and no other clause is quoted.
 //
 // What is applied, in order (z up; all on the whole profile before it is cut into segments):
-//  1. Resampling (§7.4): a profile sampled finer than mpd_resample_spacing_m (0.5 mm) is
+//  1. Resampling: a profile sampled finer than mpd_resample_spacing_m (0.5 mm) is
 //     averaged over consecutive 0.5 mm bins (the standard's recommended interval; the average
 //     is itself a mild low pass). Spacings from 0.5 mm to mpd_max_spacing_m (1 mm, the
 //     coarsest the standard allows) are used as they are; coarser ones are an InputError.
-//  2. Low-pass filter (§7.6, Annex D): 2nd-order Butterworth with its -3 dB point at the
+//  2. Low-pass filter (Annex D): 2nd-order Butterworth with its -3 dB point at the
 //     texture wavelength mpd_lowpass_cutoff_m = 2.4 mm, made digital by the bilinear transform
 //     with pre-warping and run forward and backward (zero phase: the peaks stay where they are;
 //     the overall gain is |H|², 1/(1 + (tan(πΔ/λ)/tan(πΔ/λc))⁴)). The 2.4 mm corner is what the
@@ -15,13 +16,14 @@
 //     was not available to us, so this is a documented equivalent. The ends are padded by odd
 //     reflection and the filter starts in its steady state, so a line or an offset passes
 //     unchanged.
-//  3. Segments (§7.7): consecutive 100 mm segments from the start; a shorter rest is left out.
-//  4. Slope suppression (§7.7): the least-squares line of each segment is subtracted (the
+//  3. Segments: consecutive 100 mm segments from the start; a shorter rest is left out.
+//  4. Slope suppression: the least-squares line of each segment is subtracted (the
 //     "spot" measurement variant; the standard's alternative, a high-pass filter, is for
 //     profiles evaluated over long distances).
-//  5. MSD (§7.8, eq. 1): the mean of the peak levels of the two 50 mm halves minus the mean
+//  5. MSD (§7.8): the mean of the peak levels of the two 50 mm halves minus the mean
 //     level of the segment (0 after step 4, kept for clarity).
-//  6. MPD = mean of the MSDs of all segments; ETD = 0.2 mm + 0.8·MPD (§9, eq. 2).
+//  6. MPD = mean of the MSDs of all segments; ETD = 0.2 mm + 0.8·MPD (the standard's
+//     transformation equation to the volumetric texture depth).
 // The standard's segment validity rules (more than 10 % dropouts, 5 % spikes) need the raw
 // dropout map and are the caller's: z here is already clean.
 #include <cstddef>

@@ -1,6 +1,6 @@
 #pragma once
 // Dropouts and spikes of a measured texture profile (ISO 13473-1:2019 §7.3 dropouts, §7.5
-// spikes), and their correction by linear interpolation.
+// spikes, as CAPTIF's implementation numbers them), and their correction by linear interpolation.
 #include <cstddef>
 #include <vector>
 

@@ -2,7 +2,7 @@
 // Texture spectrum of a profile in third-octave bands of wavelength, ISO 13473-4:2008:
 // texture levels L_tx = 10 lg(a_rms² / a_ref²) dB re a_ref = 1 µm (MODEL.md §1).
 //
-// Estimator (§6, DFT with band summation): the least-squares line is removed from the whole
+// Estimator (DFT with band summation): the least-squares line is removed from the whole
 // profile, a Hann window is applied, and the one-sided squared DFT magnitudes are summed over
 // the bins whose spatial frequency k/L lies in the band [f_c·10^(-1/20), f_c·10^(1/20)).
 // The sum is divided by N²·mean(w²) (the window's power loss), so that by Parseval's theorem

@@ -7,12 +7,12 @@
 // G_d(n_k) = 2|X_k|²Δ/(L_s·mean(w²)) averaged over the segments (m³, n in cycles/m).
 //
 // Class: ISO 8608 describes a road by G_d(n) = G_d(n0)(n/n0)^-w, n0 = 0.1 cycles/m, w = 2, over
-// 0.011 <= n <= 2.83 cycles/m (§5, Table 1 band). G_d(n0) is fitted with w fixed at 2 as the mean
+// 0.011 <= n <= 2.83 cycles/m (the standard's band). G_d(n0) is fitted with w fixed at 2 as the mean
 // over the third-octave bands of n (equal weight per band, as a log-log fit weighs them) of the
 // band means of G_d(n_k)·(n_k/n0)^w; every term is an unbiased estimate of G_d(n0), so their
 // mean is too (a fit of logarithms would be biased low by the periodogram's scatter). Only bins
 // k >= 3 of a segment (beyond the window's main lobe around the removed trend) and n below a
-// quarter of the sampling rate take part. The class is the one whose limits (Table 1: the
+// quarter of the sampling rate take part. The class is the one whose limits (the classification table: the
 // geometric means A: 16e-6 … H: 262144e-6 m³, limits a factor 2 either side) hold G_d(n0).
 #include <span>
 #include <string>
@@ -37,7 +37,7 @@ struct UnevennessPsd {
 // standard's band, is an InputError (key "profile").
 UnevennessPsd unevenness_psd(std::span<const double> z, double spacing_m);
 
-// The class table of ISO 8608 (Table 1): the geometric mean G_d(n0) of class 'A' … 'H', m³:
+// The class table of ISO 8608: the geometric mean G_d(n0) of class 'A' … 'H', m³:
 // 16e-6 · 4^(class - 'A'). Any other character is an InputError (key "class").
 double iso8608_class_gd_n0(char cls);
 // The class whose limits [gm/2, 2·gm) hold gd_n0 (below A's range: "A"; above H's: "H").

@@ -1,0 +1,310 @@
+// The stationary laser profilometer reader on the two real CAPTIF profiles in
+// data/surfaces/captif and on the corpus in tests/corpus/laser; the MPD and texture spectrum of
+// the real profiles, the MPD checked against a second implementation written here.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "road/laser_profile.hpp"
+#include "road/mean_profile_depth.hpp"
+#include "road/texture_spectrum.hpp"
+
+namespace rollnoise {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path captif_dir{ROLLNOISE_SOURCE_DIR "/data/surfaces/captif"};
+const fs::path corpus_dir{ROLLNOISE_LASER_CORPUS_DIR};
+const char* const stations[] = {"20211011_aylesbury_dec_station_0.dat", "20211011_aylesbury_dec_station_1.dat"};
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The data rows of a file as (distance mm, depth text), by plain splitting: for counting.
+std::vector<std::pair<double, std::string>> plain_rows(const std::string& text) {
+  std::vector<std::pair<double, std::string>> rows;
+  std::size_t pos = text.find("Depth (mm)");
+  pos = text.find('\n', pos) + 1;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const auto t1 = line.find('\t');
+    const auto t2 = line.find('\t', t1 + 1);
+    rows.emplace_back(std::stod(line.substr(t1 + 1, t2 - t1 - 1)), line.substr(t2 + 1));
+  }
+  return rows;
+}
+
+// --- A second MPD, written from ISO 13473-1:2019's text with plain loops -------------------
+// Positions x_i = i·dx. (1) 0.5 mm samples: the mean of the samples in each whole 0.5 mm bin.
+// (2) Low pass: the analog 2nd-order Butterworth H(s) = wc²/(s² + √2 wc s + wc²) at the
+// 2.4 mm corner, bilinear transform s = (2/T)(1 - 1/z)/(1 + 1/z) with wc pre-warped to
+// (2/T) tan(πT/λc), in direct form I, run forward then backward over the profile extended
+// by 200 copies of its end values (not the library's odd reflection and steady start).
+// (3) 100 mm segments of 200 samples; (4) least-squares line in x (metres) subtracted;
+// (5) MSD = (peak of first 100 + peak of last 100)/2 - mean; (6) MPD = mean MSD.
+double second_mpd(const std::vector<double>& z, double dx) {
+  const double bin = 0.5e-3;
+  const auto bins = static_cast<std::size_t>(std::floor(static_cast<double>(z.size()) * dx / bin + 1e-9));
+  std::vector<double> sum(bins, 0.0), count(bins, 0.0);
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    const auto k = static_cast<std::size_t>(std::floor(static_cast<double>(i) * dx / bin + 1e-9));
+    if (k < bins) {
+      sum[k] += z[i];
+      count[k] += 1;
+    }
+  }
+  std::vector<double> r(bins);
+  for (std::size_t k = 0; k < bins; ++k) r[k] = sum[k] / count[k];
+
+  const double T = bin;
+  const double wc = 2 / T * std::tan(std::numbers::pi * T / 2.4e-3);
+  const double c = 2 / T;  // s = c (z - 1)/(z + 1)
+  // H = wc² (z + 1)² / (c²(z - 1)² + √2 wc c (z - 1)(z + 1) + wc² (z + 1)²), in powers of 1/z:
+  const double a0 = c * c + std::sqrt(2.0) * wc * c + wc * wc;
+  const double a1 = (-2 * c * c + 2 * wc * wc) / a0;
+  const double a2 = (c * c - std::sqrt(2.0) * wc * c + wc * wc) / a0;
+  const double b0 = wc * wc / a0, b1 = 2 * wc * wc / a0, b2 = wc * wc / a0;
+  const std::size_t pad = 200;
+  std::vector<double> x(pad, r.front());
+  x.insert(x.end(), r.begin(), r.end());
+  x.insert(x.end(), pad, r.back());
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<double> y(x.size());
+    double x1 = x[0], x2 = x[0], y1 = x[0], y2 = x[0];
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      y[i] = b0 * x[i] + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
+      x2 = x1;
+      x1 = x[i];
+      y2 = y1;
+      y1 = y[i];
+    }
+    std::reverse(y.begin(), y.end());
+    x = y;
+  }
+  std::vector<double> f(x.begin() + pad, x.end() - pad);
+
+  const std::size_t segments = f.size() / 200;
+  double msd_sum = 0;
+  for (std::size_t s = 0; s < segments; ++s) {
+    double xm = 0, zm = 0;
+    for (std::size_t i = 0; i < 200; ++i) {
+      xm += static_cast<double>(i) * bin / 200;
+      zm += f[200 * s + i] / 200;
+    }
+    double sxx = 0, sxz = 0;
+    for (std::size_t i = 0; i < 200; ++i) {
+      const double xi = static_cast<double>(i) * bin;
+      sxx += (xi - xm) * (xi - xm);
+      sxz += (xi - xm) * (f[200 * s + i] - zm);
+    }
+    const double b = sxz / sxx;
+    double peak1 = -1e9, peak2 = -1e9, mean = 0;
+    for (std::size_t i = 0; i < 200; ++i) {
+      const double h = f[200 * s + i] - (zm + b * (static_cast<double>(i) * bin - xm));
+      if (i < 100) peak1 = std::max(peak1, h);
+      else peak2 = std::max(peak2, h);
+      mean += h / 200;
+    }
+    msd_sum += (peak1 + peak2) / 2 - mean;
+  }
+  return msd_sum / static_cast<double>(segments);
+}
+
+TEST(LaserProfile, RealProfilesAreReadTrimmedAndCleaned) {
+  for (const char* name : stations) {
+    SCOPED_TRACE(name);
+    const fs::path path = captif_dir / name;
+    ASSERT_TRUE(fs::exists(path)) << path;
+    const MeasuredProfile p = read_laser_profile(path);
+    EXPECT_EQ(p.source, path.string());
+    // The instrument steps 0.0375 mm; the file rounds distances to 1 µm, and its mean step
+    // over ~1.9 m comes out at 0.03749 mm.
+    EXPECT_NEAR(p.spacing_m, 0.0375e-6 * 1e3, 0.0375e-6 * 1e3 * 1e-3);
+    const double length = static_cast<double>(p.z_m.size()) * p.spacing_m;
+    // The plates' inner edges found here by a plain rule (CAPTIF's): in the first half, the row
+    // after the last one above +30 mm (dropouts counting as the row before them); in the second
+    // half, the first row above. The road kept starts 2 mm after the first and ends 2 mm
+    // before the second, give or take the rounding to whole rows (2 steps, 0.075 mm).
+    const auto rows = plain_rows(read_bytes(path));
+    double start_edge = 0, end_edge = 0;
+    bool plate = false;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].second != "NaN") plate = std::stod(rows[i].second) > 30;
+      if (i < rows.size() / 2 && plate) start_edge = rows[i + 1].first * 1e-3;
+      if (i >= rows.size() / 2 && plate && end_edge == 0) end_edge = rows[i].first * 1e-3;
+    }
+    EXPECT_NEAR(p.x0_m, start_edge + 2e-3, 0.1e-3);
+    EXPECT_NEAR(p.x0_m + length, end_edge - 2e-3, 0.1e-3);
+    // About 1808 mm for both; CAPTIF's own software finds 62.32 … 1870.351 mm for station 0.
+    EXPECT_NEAR(length, 1.808, 0.002);
+    EXPECT_EQ(p.trimmed_points + p.z_m.size(), plain_rows(read_bytes(path)).size());
+    for (double v : p.z_m) ASSERT_TRUE(std::isfinite(v));
+    // Road only: no plate left (they stand ~47 mm above it); texture within ±10 mm.
+    const auto [lo, hi] = std::minmax_element(p.z_m.begin(), p.z_m.end());
+    EXPECT_LT(*hi - *lo, 20e-3);
+    // Dropouts, counted independently: NaN depths among the kept rows.
+    std::size_t nan_rows = 0;
+    for (const auto& [x_mm, depth] : plain_rows(read_bytes(path))) {
+      if (x_mm * 1e-3 >= p.x0_m - 1e-9 && x_mm * 1e-3 < p.x0_m + length - 0.5 * p.spacing_m) nan_rows += depth == "NaN";
+    }
+    EXPECT_EQ(p.dropouts, nan_rows);
+    EXPECT_GT(p.dropouts, p.z_m.size() / 50);  // the laser misses a few percent of the road
+    EXPECT_LT(p.dropouts, p.z_m.size() / 5);
+    EXPECT_LT(p.spikes, p.z_m.size() / 20);  // the standard's 5 % limit
+    std::printf("  %s: %zu points at %.7g mm (%.2f mm from %.3f mm), %zu dropouts, %zu spikes, %zu trimmed\n", name,
+                p.z_m.size(), p.spacing_m * 1e3, length * 1e3, p.x0_m * 1e3, p.dropouts, p.spikes, p.trimmed_points);
+  }
+}
+
+TEST(LaserProfile, RealProfilesMpdAgreesWithASecondImplementation) {
+  for (const char* name : stations) {
+    SCOPED_TRACE(name);
+    const MeasuredProfile p = read_laser_profile(captif_dir / name);
+    const MpdResult r = mean_profile_depth(p.z_m, p.spacing_m);
+    const double second = second_mpd(p.z_m, p.spacing_m);
+    std::printf("  %s: MPD %.4f mm (second implementation %.4f mm), ETD %.4f mm, %zu segments\n", name,
+                r.mpd_m * 1e3, second * 1e3, r.etd_m * 1e3, r.segments);
+    EXPECT_EQ(r.segments, 18u);  // 1808 mm
+    // A coarse chip seal: about 3 mm (the data's description).
+    EXPECT_GT(r.mpd_m, 2.5e-3);
+    EXPECT_LT(r.mpd_m, 3.6e-3);
+    // The two differ only in how the filter treats the profile's two ends (odd reflection and
+    // steady start vs constant extension): that moves the filtered heights in the first and
+    // last ~2 mm by at most ~0.1 mm, which can shift the first or last segment's MSD by that
+    // (if its peak lies there) and the MPD by 1/18 of it: 0.01 mm.
+    EXPECT_NEAR(r.mpd_m, second, 0.01e-3);
+  }
+}
+
+TEST(LaserProfile, RealProfilesTextureSpectrumPeaksAtChipSizeWavelengths) {
+  // A 1.8 m profile resolves bands up to 125 mm (edge 141 mm <= 1808/12). One band of one
+  // profile scatters: m = 0.2316 L/λ DFT bins give a relative standard deviation of
+  // sqrt(1.94/m) (see test_texture_spectrum.cpp), ±1.8 dB at 40 mm (m = 10.5). So the checks:
+  //  - each profile: 5 mm and 125 mm at least 4 dB below its highest band, which lies between
+  //    12.5 and 63 mm; the 31.5 and 40 mm bands together (m = 21: ±1.3 dB) within 2 dB of it;
+  //  - the two profiles' mean (energy average, the surface's estimate) peaks at 25 to 40 mm.
+  std::vector<TextureBand> mean;
+  for (const char* name : stations) {
+    SCOPED_TRACE(name);
+    const MeasuredProfile p = read_laser_profile(captif_dir / name);
+    const auto bands = texture_spectrum(p.z_m, p.spacing_m);
+    ASSERT_FALSE(bands.empty());
+    EXPECT_NEAR(bands.front().nominal_wavelength_m, 0.5e-3, 1e-12);
+    EXPECT_NEAR(bands.back().nominal_wavelength_m, 125e-3, 1e-12);
+    auto level = [&](double nominal) {
+      for (const auto& b : bands)
+        if (std::abs(b.nominal_wavelength_m - nominal) < 1e-3 * nominal) return b.level_db;
+      ADD_FAILURE() << "no band " << nominal;
+      return 0.0;
+    };
+    const auto peak = *std::max_element(bands.begin(), bands.end(),
+                                        [](const TextureBand& a, const TextureBand& b) { return a.level_db < b.level_db; });
+    EXPECT_GE(peak.nominal_wavelength_m, 12.5e-3 * 0.99);
+    EXPECT_LE(peak.nominal_wavelength_m, 63e-3 * 1.01);
+    const double chip = 10 * std::log10(std::pow(10, level(31.5e-3) / 10) + std::pow(10, level(40e-3) / 10)) - 10 * std::log10(2.0);
+    EXPECT_GT(chip, peak.level_db - 2.0);
+    EXPECT_LT(level(5e-3), peak.level_db - 4.0);
+    EXPECT_LT(level(125e-3), peak.level_db - 4.0);
+    std::printf("  %s: L_tx (dB re 1 um)", name);
+    for (double w : {5e-3, 10e-3, 20e-3, 31.5e-3, 40e-3, 80e-3, 100e-3}) std::printf("  %g mm %.2f", w * 1e3, level(w));
+    std::printf("  (highest %g mm %.2f)\n", peak.nominal_wavelength_m * 1e3, peak.level_db);
+    if (mean.empty()) {
+      mean = bands;
+      for (auto& b : mean) b.level_db = std::pow(10, b.level_db / 10) / 2;
+    } else {
+      ASSERT_EQ(mean.size(), bands.size());
+      for (std::size_t i = 0; i < bands.size(); ++i) mean[i].level_db += std::pow(10, bands[i].level_db / 10) / 2;
+    }
+  }
+  const auto peak = *std::max_element(mean.begin(), mean.end(),
+                                      [](const TextureBand& a, const TextureBand& b) { return a.level_db < b.level_db; });
+  std::printf("  mean of both: highest band %g mm, %.2f dB\n", peak.nominal_wavelength_m * 1e3, 10 * std::log10(peak.level_db));
+  EXPECT_GE(peak.nominal_wavelength_m, 25e-3 * 0.99);
+  EXPECT_LE(peak.nominal_wavelength_m, 40e-3 * 1.01);
+}
+
+TEST(LaserProfile, CorpusFilesBehaveAsNamed) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(corpus_dir)) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 10u) << corpus_dir;
+  for (const auto& path : files) {
+    const std::string name = path.filename().string();
+    SCOPED_TRACE(name);
+    if (name.rfind("ok_", 0) == 0) {
+      const MeasuredProfile p = read_laser_profile(path);
+      EXPECT_GE(p.z_m.size(), 2u);
+      EXPECT_NEAR(p.spacing_m, 0.5e-3, 1e-12);
+      for (double v : p.z_m) EXPECT_TRUE(std::isfinite(v));
+      EXPECT_TRUE(looks_like_laser_profile(read_bytes(path)));
+    } else {
+      try {
+        read_laser_profile(path);
+        ADD_FAILURE() << "no error";
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        EXPECT_EQ(e.source(), path.string());
+      }
+    }
+  }
+}
+
+TEST(LaserProfile, CorpusDetailsAreRead) {
+  // 4 dropouts, a 10 mm plate with 2 mm of dropouts on it, 110 mm of road, a 10 mm plate,
+  // 3 mm of dropouts: the road kept is 2 mm inside each plate, 106 mm (212 rows) from 12 mm.
+  const MeasuredProfile both = read_laser_profile(corpus_dir / "ok_plates_both_ends_crlf.dat");
+  EXPECT_EQ(both.z_m.size(), 212u);
+  EXPECT_EQ(both.trimmed_points, 270u - 212u);
+  EXPECT_NEAR(both.x0_m, 14e-3, 1e-12);
+  EXPECT_EQ(both.dropouts, 13u);  // every 17th road row from the 6th: all 13 lie in the kept rows
+  EXPECT_EQ(both.spikes, 0u);
+  const MeasuredProfile none = read_laser_profile(corpus_dir / "ok_no_plates_lf.dat");
+  EXPECT_EQ(none.z_m.size(), 240u);
+  EXPECT_EQ(none.trimmed_points, 0u);
+  EXPECT_NEAR(none.z_m[1], 1e-3 * 0.4 * std::sin(0.9) + 1e-3 * 1.5 * std::sin(2 * std::numbers::pi * 0.5 / 12.5), 1e-6);
+  const MeasuredProfile start = read_laser_profile(corpus_dir / "ok_start_plate_only.dat");
+  EXPECT_EQ(start.trimmed_points, 24u);  // 20 plate rows and the 2 mm buffer
+  const MeasuredProfile empty_depth = read_laser_profile(corpus_dir / "ok_empty_depth_is_dropout.dat");
+  EXPECT_EQ(empty_depth.dropouts, 1u);
+  EXPECT_DOUBLE_EQ(empty_depth.z_m[0], 1e-3);  // the start takes the nearest valid value
+}
+
+TEST(LaserProfile, ContentDetection) {
+  EXPECT_TRUE(looks_like_laser_profile(read_bytes(captif_dir / stations[0])));
+  EXPECT_TRUE(looks_like_laser_profile(read_bytes(captif_dir / stations[1])));
+  EXPECT_FALSE(looks_like_laser_profile("x,z\n0,0\n1,1\n"));
+  EXPECT_FALSE(looks_like_laser_profile(""));
+  EXPECT_FALSE(looks_like_laser_profile("*****DATA*****\nsomething else\n"));
+  EXPECT_FALSE(looks_like_laser_profile(std::string(70000, 'a') + "\n*****DATA*****\nNo\tDistance (mm)\tDepth (mm)\n"));
+}
+
+TEST(LaserProfile, MissingFileAndBadTextAreInputErrorsNamingTheSource) {
+  EXPECT_THROW(read_laser_profile(corpus_dir / "no_such_file.dat"), InputError);
+  try {
+    parse_laser_profile("*****DATA*****\nDistance (mm)\tDepth (mm)\n0\tNaN\n0.5\tNaN\n", "mine");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "mine");
+    EXPECT_EQ(e.key(), "profile");  // all dropouts
+  }
+}
+
+}  // namespace
+}  // namespace rollnoise
