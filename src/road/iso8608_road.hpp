@@ -8,7 +8,7 @@
 // 0.35 m to 90 m wavelength), zero outside it. [road] type = "iso8608". (The standard's notes
 // put the lower limit of on-road measurements at about 0.01 cycles/m and recommend 10 cycles/m
 // as the upper limit for vehicle vibration; shorter wavelengths, up to texture, are not part of
-// the class: combine with a texture road for them.)
+// the class and not generated here (the texture road covers them; the two cannot yet be summed).)
 //
 // Keys. `class` = "A" .. "H": G_d(n0) the class's geometric mean (A 16e-6, B 64e-6, C 256e-6,
 // D 1024e-6, E 4096e-6, F 16384e-6, G 65536e-6, H 262144e-6 m^3), w = 2; or `gd_n0` (m^3, > 0)
