@@ -1,5 +1,5 @@
 #pragma once
-// Portable standard normal numbers from std::mt19937_64, shared by the random roads and
+// Portable uniform and standard normal numbers from std::mt19937_64, shared by the random roads and
 // surfaces. Written out rather than std::uniform_real_distribution / std::normal_distribution,
 // whose algorithms the standard leaves to the implementation: the same seed must give the same
 // road on every platform and standard library.
@@ -13,6 +13,11 @@ namespace rollnoise::portable {
 // Uniform on (0, 1] from the top 53 bits, so that log() never sees 0.
 inline double uniform_open_closed(std::mt19937_64& engine) {
   return (static_cast<double>(engine() >> 11) + 1.0) * 0x1.0p-53;
+}
+
+// Uniform on [0, 1) from the top 53 bits.
+inline double uniform_closed_open(std::mt19937_64& engine) {
+  return static_cast<double>(engine() >> 11) * 0x1.0p-53;
 }
 
 // Box-Muller: two independent standard normals from two uniforms (two engine draws).

@@ -2,19 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <numbers>
-#include <random>
 #include <stdexcept>
 #include <utility>
-
-#include <fftw3.h>
+#include <vector>
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
-#include "road/portable_normal.hpp"
 #include "core/fftw_plan.hpp"
 #include "road/random_spectrum.hpp"
+#include "road/spectral_synthesis.hpp"
 
 namespace rollnoise {
 namespace {
@@ -22,10 +19,6 @@ namespace {
 [[noreturn]] void throw_bad(const char* key, const std::string& problem) {
   throw InputError("", key, problem);  // the factory names the file and the section
 }
-
-struct FftwFree {
-  void operator()(void* p) const noexcept { fftw_free(p); }
-};
 
 }  // namespace
 
@@ -60,42 +53,23 @@ RandomRoad::RandomRoad(const RandomRoadSpec& spec) {
   }
   const std::size_t n = fft_friendly_size(static_cast<std::size_t>(needed));
   grid_size_ = n;
-  const double length = spacing_ * static_cast<double>(n);
   const std::size_t last = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(cover / spacing_)));
 
   // Random complex amplitudes for modes m = 1 .. (n-1)/2, wavenumber m/length (cycles/m):
-  // a complex normal times the square root of the spectral density. The mean (m = 0) and the
-  // Nyquist mode of an even grid are left at 0 (the latter is beyond both spectra). Every
-  // mode draws its pair of normals, so the sequence of draws does not depend on the spectrum.
-  std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
-  std::unique_ptr<double[], FftwFree> grid(fftw_alloc_real(n));
-  if (!spectrum || !grid) throw std::bad_alloc();
-  const FftwPlan plan([&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum.get(), grid.get(), FFTW_ESTIMATE); });
-
-  std::mt19937_64 engine(spec.seed);
-  for (std::size_t m = 0; m <= n / 2; ++m) {
-    spectrum[m][0] = 0.0;
-    spectrum[m][1] = 0.0;
-  }
+  // a complex normal times the square root of the spectral density, up to a constant factor
+  // that the scaling below removes (spectral_synthesis.hpp). The mean and the Nyquist mode of
+  // an even grid are 0 (the latter is beyond both spectra).
   const double band_low = 1.0 / longest;
   const double band_high = 1.0 / shortest;
-  for (std::size_t m = 1; 2 * m < n; ++m) {
-    const auto [re, im] = portable::standard_normal_pair(engine);
-    const double wavenumber = static_cast<double>(m) / length;
-    double amplitude = 0.0;
+  const std::vector<double> grid = synthesise_periodic_profile(n, spacing_, spec.seed, [&](double wavenumber) {
     if (gaussian) {
       // Two-sided density of R(xi) = s^2 exp(-(xi/lc)^2) in k = 2 pi n is
-      // s^2 lc / (2 sqrt(pi)) exp(-k^2 lc^2 / 4); its square root, up to a constant factor
-      // that the scaling below removes.
+      // s^2 lc / (2 sqrt(pi)) exp(-k^2 lc^2 / 4); its square root, up to a constant factor.
       const double a = std::numbers::pi * wavenumber * longest;
-      amplitude = std::exp(-0.5 * a * a);
-    } else {
-      amplitude = (wavenumber >= band_low && wavenumber <= band_high) ? 1.0 : 0.0;
+      return std::exp(-0.5 * a * a);
     }
-    spectrum[m][0] = amplitude * re;
-    spectrum[m][1] = amplitude * im;
-  }
-  plan.execute();
+    return (wavenumber >= band_low && wavenumber <= band_high) ? 1.0 : 0.0;
+  });
 
   // Scale so that the sample standard deviation of the stationary profile over the grid points
   // covering [0, x_max] (j = 0 .. last) is exactly std_dev: sqrt(sum (r_j - mean)^2 / count),

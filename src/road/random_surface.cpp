@@ -4,16 +4,15 @@
 #include <cmath>
 #include <new>
 #include <numbers>
-#include <random>
 #include <stdexcept>
 
 #include <fftw3.h>
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
-#include "road/portable_normal.hpp"
 #include "core/fftw_plan.hpp"
 #include "road/random_spectrum.hpp"
+#include "road/spectral_synthesis.hpp"
 
 namespace rollnoise {
 namespace {
@@ -89,49 +88,24 @@ RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
   stride_ = 2 * half;
   data_.reset(fftw_alloc_real(n0 * stride_));
   if (!data_) throw std::bad_alloc();
-  auto* spectrum = reinterpret_cast<fftw_complex*>(data_.get());
-  const FftwPlan plan([&] {
-    return fftw_plan_dft_c2r_2d(static_cast<int>(n0), static_cast<int>(n1), spectrum, data_.get(), FFTW_ESTIMATE);
-  });
 
   // Random complex amplitudes: a complex normal times the square root of the spectral density
-  // at wavenumber (nx, ny) = (i'/Px, k/Py), i' the signed index of row i. The mean and the
-  // Nyquist row and column are left at 0 (beyond both spectra). Every entry of the half
-  // spectrum draws its pair of normals in a fixed order, so the draws do not depend on the
-  // spectrum; the column k = 0 is then made Hermitian, X(-i', 0) = conj X(i', 0), so that each
-  // pair of opposite wavenumbers carries one complex normal, like every other column.
+  // at wavenumber (nx, ny), up to a constant factor that the scaling removes
+  // (spectral_synthesis.hpp: mean, Nyquist row and column 0, column k = 0 Hermitian).
   const double period_x = spacing_ * static_cast<double>(n0);
   const double period_y = spacing_ * static_cast<double>(n1);
   const double band_low = 1.0 / longest;
   const double band_high = 1.0 / shortest;
-  std::mt19937_64 engine(spec.seed);
-  for (std::size_t i = 0; i < n0; ++i) {
-    const double signed_i = 2 * i <= n0 ? static_cast<double>(i) : static_cast<double>(i) - static_cast<double>(n0);
-    const double nx = signed_i / period_x;
-    for (std::size_t k = 0; k < half; ++k) {
-      const auto [re, im] = portable::standard_normal_pair(engine);
-      const double ny = static_cast<double>(k) / period_y;
-      const double n2 = nx * nx + ny * ny;
-      double amplitude = 0.0;
-      if ((i == 0 && k == 0) || 2 * i == n0 || 2 * k == n1) {
-        amplitude = 0.0;
-      } else if (gaussian) {
-        // 2-D density of R = s^2 exp(-(r/lc)^2): pi s^2 lc^2 exp(-pi^2 lc^2 |n|^2) (n in
-        // cycles/m); its square root up to a constant factor that the scaling removes.
-        amplitude = std::exp(-0.5 * std::numbers::pi * std::numbers::pi * longest * longest * n2);
-      } else {
-        const double magnitude = std::sqrt(n2);
-        amplitude = (magnitude >= band_low && magnitude <= band_high) ? 1.0 : 0.0;
-      }
-      spectrum[i * half + k][0] = amplitude * re;
-      spectrum[i * half + k][1] = amplitude * im;
+  synthesise_periodic_surface(data_.get(), n0, n1, period_x, period_y, spec.seed, [&](double nx, double ny) {
+    const double n2 = nx * nx + ny * ny;
+    if (gaussian) {
+      // 2-D density of R = s^2 exp(-(r/lc)^2): pi s^2 lc^2 exp(-pi^2 lc^2 |n|^2) (n in
+      // cycles/m); its square root up to a constant factor that the scaling removes.
+      return std::exp(-0.5 * std::numbers::pi * std::numbers::pi * longest * longest * n2);
     }
-  }
-  for (std::size_t i = 1; 2 * i < n0; ++i) {
-    spectrum[(n0 - i) * half][0] = spectrum[i * half][0];
-    spectrum[(n0 - i) * half][1] = -spectrum[i * half][1];
-  }
-  plan.execute();
+    const double magnitude = std::sqrt(n2);
+    return (magnitude >= band_low && magnitude <= band_high) ? 1.0 : 0.0;
+  });
 
   // Scale so that the standard deviation over the stored grid (every point of [0, end_x()] x
   // [-half_extent_y(), half_extent_y()]) is exactly std_dev, population form, mean not removed:

@@ -19,6 +19,9 @@
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
 #include "road/cleat_road.hpp"
+#include "road/aggregate_road.hpp"
+#include "road/iso8608_road.hpp"
+#include "road/texture_road.hpp"
 
 namespace rollnoise {
 namespace {
@@ -61,6 +64,30 @@ std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) 
   return build_named(road, [&] { return std::make_unique<RandomRoad>(spec); });
 }
 
+std::unique_ptr<RoadProfile> make_texture(const ConfigTable& road, double x_max) {
+  TextureRoadSpec spec;
+  read_texture_keys(road, spec, false, 100.0);
+  spec.x_max = x_max;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return make_texture_profile(spec); });
+}
+
+std::unique_ptr<RoadProfile> make_iso8608(const ConfigTable& road, double x_max) {
+  Iso8608RoadSpec spec;
+  read_iso8608_keys(road, spec);
+  spec.x_max = x_max;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return make_iso8608_profile(spec); });
+}
+
+std::unique_ptr<RoadProfile> make_aggregate(const ConfigTable& road, double x_max) {
+  AggregateRoadSpec spec;
+  read_aggregate_keys(road, spec, false, 100.0);
+  spec.x_max = x_max;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return make_aggregate_profile(spec); });
+}
+
 std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
   const std::string name = road.text("file");
   if (name.empty()) road.fail("file", "must name a CSV file (columns x,z in m)");
@@ -88,7 +115,7 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
                             "1-D profile: \"flat\", \"sine\", \"random\", \"file\" or \"cleat\"");
     }
   }
-  const std::string type = road.choice("type", {"flat", "sine", "random", "file", "cleat"});
+  const std::string type = road.choice("type", {"flat", "sine", "random", "file", "cleat", "iso8608", "texture", "aggregate"});
   if (type == "flat") {
     road.reject_unknown_keys();
     return std::make_unique<FlatRoad>();
@@ -96,6 +123,9 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
   if (type == "sine") return make_sine(road);
   if (type == "cleat") return make_cleat(road);
   if (type == "random") return make_random(road, x_max);
+  if (type == "iso8608") return make_iso8608(road, x_max);
+  if (type == "texture") return make_texture(road, x_max);
+  if (type == "aggregate") return make_aggregate(road, x_max);
   return make_file(road, x_min, x_max);
 }
 

@@ -14,7 +14,7 @@ class ConfigTable;
 class RoadProfile {
  public:
   virtual ~RoadProfile() = default;
-  // "flat", "sine", "random", "file".
+  // "flat", "sine", "random", "file", "cleat", "iso8608", "texture", "aggregate".
   virtual std::string type() const = 0;
   // Height at x (m). Defined for every x; r(x) = 0 for x < 0.
   virtual double height(double x) const = 0;

@@ -13,9 +13,11 @@
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "road/aggregate_road.hpp"
 #include "road/height_map_surface.hpp"
 #include "road/random_surface.hpp"
 #include "road/random_spectrum.hpp"
+#include "road/texture_road.hpp"
 
 namespace rollnoise {
 
@@ -54,6 +56,24 @@ std::unique_ptr<RoadSurface> make_random_surface(const ConfigTable& road, double
   return build_named(road, [&] { return std::make_unique<RandomSurface>(spec); });
 }
 
+std::unique_ptr<RoadSurface> make_texture_map(const ConfigTable& road, double x_max, double half_width) {
+  TextureRoadSpec spec;
+  read_texture_keys(road, spec, true, 20.0);
+  spec.x_max = x_max;
+  spec.half_width = half_width;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return make_texture_surface(spec); });
+}
+
+std::unique_ptr<RoadSurface> make_aggregate_map(const ConfigTable& road, double x_max, double half_width) {
+  AggregateRoadSpec spec;
+  read_aggregate_keys(road, spec, true, 5.0);
+  spec.x_max = x_max;
+  spec.half_width = half_width;
+  road.reject_unknown_keys();
+  return build_named(road, [&] { return make_aggregate_surface(spec); });
+}
+
 std::unique_ptr<RoadSurface> make_height_map(const ConfigTable& road, double x_min, double x_max,
                                              double half_width) {
   const std::string name = road.text("file");
@@ -75,9 +95,11 @@ std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x
     throw std::invalid_argument("make_road_surface: half_width must be finite and >= 0");
   }
   const std::string type = road.choice(
-      "type", {"flat", "sine", "random", "file", "cleat", "random_surface", "surface"});
+      "type", {"flat", "sine", "random", "file", "cleat", "iso8608", "random_surface", "surface", "texture", "aggregate"});
   if (type == "random_surface") return make_random_surface(road, x_max, half_width);
   if (type == "surface") return make_height_map(road, x_min, x_max, half_width);
+  if (type == "texture") return make_texture_map(road, x_max, half_width);
+  if (type == "aggregate") return make_aggregate_map(road, x_max, half_width);
   return std::make_unique<ProfileSurface>(make_road_profile(road, x_min, x_max));
 }
 

@@ -17,8 +17,8 @@ class ConfigTable;
 class RoadSurface {
  public:
   virtual ~RoadSurface() = default;
-  // "flat", "sine", "random", "file", "cleat" (a 1-D profile on every line), "random_surface",
-  // "surface" (a height-map file).
+  // "flat", "sine", "random", "file", "cleat", "iso8608" (a 1-D profile on every line),
+  // "random_surface", "surface" (a height-map file), "texture", "aggregate".
   virtual std::string type() const = 0;
   // Height (m) at x along the road and y across it. r = 0 for x < 0. Generated and read
   // surfaces cover the range they were built for; outside it (x >= 0) they throw
@@ -41,10 +41,12 @@ class ProfileSurface final : public RoadSurface {
   std::unique_ptr<RoadProfile> profile_;
 };
 
-// Builds the surface of a [road] table. The 1-D types (flat, sine, random, file, cleat) give the
-// same profile on every lateral line (a ProfileSurface around make_road_profile, with the same
-// keys and defaults). The 2-D types are "random_surface" (random_surface.hpp) and "surface" (a
-// height-map file, height_map_surface.hpp). The run looks at x in [x_min, x_max] and y in
+// Builds the surface of a [road] table. The 1-D types (flat, sine, random, file, cleat, iso8608)
+// give the same profile on every lateral line (a ProfileSurface around make_road_profile, with
+// the same keys and defaults). The 2-D types are "random_surface" (random_surface.hpp),
+// "surface" (a height-map file, height_map_surface.hpp), "texture" (texture_road.hpp; as a
+// 2-D map, with the keys width and anisotropy) and "aggregate" (aggregate_road.hpp; as a 2-D
+// map, with the key width). The run looks at x in [x_min, x_max] and y in
 // [-half_width, half_width] (half_width >= 0). Unknown keys are rejected; every bad value is an
 // InputError naming "[road] key" in the file that set it, or the data file.
 std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,
