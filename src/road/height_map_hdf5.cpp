@@ -1,0 +1,90 @@
+#include "road/height_map_hdf5.hpp"
+
+#include <cmath>
+
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/hdf5_reader.hpp"
+#include "road/profile_csv.hpp"
+
+namespace rollnoise {
+namespace {
+
+// The factor from the dataset's `units` attribute to metres.
+double units_of(const Hdf5Reader& file, const std::string& dataset) {
+  const auto units = file.string_attribute(dataset, "units");
+  if (!units) {
+    throw InputError(file.source(), dataset,
+                     "has no attribute \"units\"; add one: \"m\", \"mm\" or \"um\"");
+  }
+  const double scale = unit_to_metres(*units);
+  if (scale == 0.0) {
+    throw InputError(file.source(), dataset + " attribute units",
+                     "unknown unit \"" + printable_excerpt(*units) + "\"; allowed units are \"m\", \"mm\" and \"um\"");
+  }
+  return scale;
+}
+
+std::vector<double> grid_axis(const Hdf5Reader& file, const std::string& dataset, std::size_t min_count) {
+  Hdf5Array array = file.read_numbers(dataset, 1, max_height_map_values);
+  const double scale = units_of(file, dataset);
+  std::vector<double>& v = array.values;
+  if (v.size() < min_count) {
+    throw InputError(file.source(), dataset,
+                     "has " + std::to_string(v.size()) + " values; at least " + std::to_string(min_count) + " needed");
+  }
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k] *= scale;
+    if (!std::isfinite(v[k])) {
+      throw InputError(file.source(), dataset + "[" + std::to_string(k) + "]", "must be a finite number");
+    }
+    if (k > 0 && !(v[k] > v[k - 1])) {
+      throw InputError(file.source(), dataset + "[" + std::to_string(k) + "]",
+                       format_number(v[k]) + " m is not greater than the value before (" + format_number(v[k - 1]) +
+                           " m); the grid lines must be strictly increasing");
+    }
+  }
+  return std::move(v);
+}
+
+}  // namespace
+
+HeightMapGrid read_height_map_hdf5(const std::filesystem::path& path) {
+  const Hdf5Reader file(path);
+  HeightMapGrid out;
+  out.source = file.source();
+  out.x = grid_axis(file, "/x", 2);
+  out.y = grid_axis(file, "/y", 1);
+  Hdf5Array z = file.read_numbers("/z", 2, max_height_map_values);
+  const std::size_t nx = out.x.size();
+  const std::size_t ny = out.y.size();
+  const bool shaped = z.dims.size() == 2 && z.dims[0] == nx && z.dims[1] == ny;
+  if (!shaped) {
+    std::string shape;
+    for (std::size_t d : z.dims) shape += (shape.empty() ? "" : " x ") + std::to_string(d);
+    const bool transposed = z.dims.size() == 2 && z.dims[0] == ny && z.dims[1] == nx;
+    throw InputError(out.source, "/z",
+                     "has shape " + shape + "; it must be [x][y], " + std::to_string(nx) + " x " + std::to_string(ny) +
+                         (transposed ? " (it looks transposed: [y][x])" : ""));
+  }
+  const double scale = units_of(file, "/z");
+  for (std::size_t k = 0; k < z.values.size(); ++k) {
+    double& v = z.values[k];
+    if (std::isnan(v)) {
+      ++out.dropouts;
+      continue;
+    }
+    v *= scale;
+    if (!std::isfinite(v)) {
+      throw InputError(out.source, "/z[" + std::to_string(k / ny) + "][" + std::to_string(k % ny) + "]",
+                       "must be a finite number, or NaN for a dropout");
+    }
+  }
+  if (out.dropouts == z.values.size()) {
+    throw InputError(out.source, "/z", "has no value at all (every value is NaN, a dropout)");
+  }
+  out.z = std::move(z.values);
+  return out;
+}
+
+}  // namespace rollnoise
