@@ -76,6 +76,11 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_profile: the x range must be numbers");
   }
+  // A library surface file's descriptive [about] table (name, description, mpd_m, sources, ...)
+  // is for people and tools, not for building the road.
+  if (const toml::node* about = road.raw("about"); about && !about->is_table()) {
+    road.fail("about", "must be a table of descriptive keys ([about] name = ..., description = ...)");
+  }
   // The 2-D surfaces (road_surface.hpp) vary across the road: only a tyre model with lateral
   // lines can roll over them. Named here so that a point model gets a message that says so
   // rather than an unknown type.
