@@ -100,7 +100,8 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source,
       }
       if (!std::isfinite(value)) {
         throw InputError(source, where + ", column \"" + csv.header[c] + "\"",
-                         "must be a finite number (got " + printable_excerpt(field) + ")");
+                         "must be a finite number (got " + printable_excerpt(field) + ")" +
+                             (empty == EmptyCells::as_nan ? "; leave the cell empty for a missing value (a dropout)" : ""));
       }
       csv.columns[c].push_back(value);
     }
