@@ -15,7 +15,7 @@
 namespace rollnoise {
 namespace {
 
-FileRoad::Rows read_profile(const std::filesystem::path& path) {
+FileRoad::Rows read_profile(const std::filesystem::path& path, SpikeHandling spikes) {
   const std::string source = path.string();
   const ProfileFormat format = detect_profile_format(path);
   if (format == ProfileFormat::hdf5) {
@@ -42,14 +42,14 @@ FileRoad::Rows read_profile(const std::filesystem::path& path) {
   FileRoad::Rows rows;
   rows.x = std::move(table.x);
   rows.z = std::move(table.z_lines.front());
-  if (is_uniformly_spaced(rows.x)) {
+  if (spikes == SpikeHandling::remove && is_uniformly_spaced(rows.x)) {
     const double spacing = (rows.x.back() - rows.x.front()) / static_cast<double>(rows.x.size() - 1);
     const LineCleaning cleaning = clean_measured_line(rows.z, spacing, source);
     rows.dropouts = cleaning.dropouts;
     rows.spikes = cleaning.spikes;
     return rows;
   }
-  // Uneven rows: leave the dropouts out, linear interpolation bridges them.
+  // Uneven rows, or spikes kept: leave the dropouts out, linear interpolation bridges them.
   std::size_t kept = 0;
   for (std::size_t i = 0; i < rows.x.size(); ++i) {
     if (std::isnan(rows.z[i])) continue;
@@ -88,8 +88,8 @@ FileRoad::FileRoad(std::vector<double> x, std::vector<double> z, std::string sou
   }
 }
 
-FileRoad::FileRoad(const std::filesystem::path& path, double x_min, double x_max)
-    : FileRoad(read_profile(path), path.string()) {
+FileRoad::FileRoad(const std::filesystem::path& path, double x_min, double x_max, SpikeHandling spikes)
+    : FileRoad(read_profile(path, spikes), path.string()) {
   check_covers(x_min, x_max);
 }
 

@@ -5,9 +5,10 @@
 // is resampled to the contact grid of a run.
 //
 // Cleaning (ISO 13473-1, line_cleaning.hpp): when x is evenly spaced (profile_file.hpp's
-// test), dropouts (empty cells) are filled and spikes replaced by clean_profile. When it is
-// not, spikes are not looked for (the ISO procedure assumes even sampling) and the rows with a
-// dropout are left out, so that linear interpolation bridges them. The counts are kept.
+// test), dropouts (empty cells) are filled and spikes (steps |dz| >= 3 dx) replaced by
+// clean_profile. When it is not, or with SpikeHandling::keep (a made-up profile whose steep
+// steps are meant: a cleat, a kerb), spikes are not looked for and the rows with a dropout are
+// left out, so that linear interpolation bridges them. The counts are kept.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -18,11 +19,14 @@
 
 namespace rollnoise {
 
+enum class SpikeHandling { remove, keep };
+
 class FileRoad final : public RoadProfile {
  public:
   // Reads `path` (header x,z; '#' comments) and checks that it covers the range the run needs,
   // [max(0, x_min), x_max]. Every problem is an InputError naming the file.
-  FileRoad(const std::filesystem::path& path, double x_min, double x_max);
+  FileRoad(const std::filesystem::path& path, double x_min, double x_max,
+           SpikeHandling spikes = SpikeHandling::remove);
   // From data already in memory; `source` names it in messages. x strictly increasing, at
   // least 2 rows, all values finite.
   FileRoad(std::vector<double> x, std::vector<double> z, std::string source);

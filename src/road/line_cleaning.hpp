@@ -1,8 +1,9 @@
 #pragma once
 // Cleaning of one measured height line before use: dropouts (NaN: no reading) and spikes
-// handled per ISO 13473-1. The work is done by clean_profile (profile_cleaning.hpp, branch
-// road-analysis); this is the one place the readers call it, so that every reader cleans the
-// same way.
+// handled per ISO 13473-1. The work is done by clean_profile (profile_cleaning.hpp: spikes are
+// steps |dz| >= 3 dx between valid samples; dropouts and spikes are filled by linear
+// interpolation); this is the one place the readers call it, so that every reader cleans the
+// same way and its messages name the file.
 #include <cstddef>
 #include <string>
 #include <vector>

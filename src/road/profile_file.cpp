@@ -8,6 +8,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "road/height_map_hdf5.hpp"
+#include "road/laser_profile.hpp"
 #include "road/line_cleaning.hpp"
 #include "road/profile_csv.hpp"
 #include "road/profile_format.hpp"
@@ -102,10 +103,19 @@ LoadedProfile load_profile_file(const std::filesystem::path& path) {
       out = make_uniform_profile(grid.x, lines, grid.y, source);
       break;
     }
-    case ProfileFormat::laser:
-      // TODO(road-analysis merge): read_laser_profile(path), then make_uniform_profile.
-      throw InputError(source, "",
-                       "is a laser profilometer export, whose reader is not part of this build yet");
+    case ProfileFormat::laser: {
+      // Read, trimmed of its reference plates and cleaned by its reader: on a uniform grid.
+      MeasuredProfile laser = read_laser_profile(path);
+      out.source = laser.source;
+      out.spacing_m = laser.spacing_m;
+      out.x.resize(laser.z_m.size());
+      for (std::size_t i = 0; i < out.x.size(); ++i) out.x[i] = static_cast<double>(i) * laser.spacing_m;
+      out.z_lines.push_back(std::move(laser.z_m));
+      out.y = {0.0};
+      out.dropouts = laser.dropouts;
+      out.spikes = laser.spikes;
+      return out;
+    }
     case ProfileFormat::unknown:
       throw InputError(source, "",
                        "is not a profile file this program reads: a profile CSV (columns x and z, or "

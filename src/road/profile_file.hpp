@@ -5,7 +5,8 @@
 //
 // Formats: a profile CSV (profile_csv.hpp: x,z or x,z_1..z_n with a y line); an HDF5 height
 // map (height_map_hdf5.hpp: each y grid line becomes one height line along x); a laser
-// profilometer export (laser_profile.hpp, when branch road-analysis has merged).
+// profilometer export (laser_profile.hpp: read, trimmed of its reference plates and cleaned by
+// read_laser_profile; x = i * spacing from the first sample kept).
 //
 // Uniform spacing: x is uniform when every interval is within 1e-6 (relative) of the mean
 // interval; then x is replaced by x_0 + i * spacing (a change below 1e-6 of the spacing).

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/hdf5_reader.hpp"
+#include "road/laser_profile.hpp"
 
 namespace rollnoise {
 namespace {
@@ -35,11 +36,6 @@ std::string_view to_string(ProfileFormat format) {
   return "unknown";
 }
 
-bool looks_like_laser_profile_when_merged(std::string_view /*head*/) {
-  // TODO(road-analysis merge): return looks_like_laser_profile(head);
-  return false;
-}
-
 ProfileFormat detect_profile_format(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
@@ -51,7 +47,7 @@ ProfileFormat detect_profile_format(const std::filesystem::path& path) {
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (has_hdf5_signature(path)) return ProfileFormat::hdf5;
-  if (looks_like_laser_profile_when_merged(head)) return ProfileFormat::laser;
+  if (looks_like_laser_profile(head)) return ProfileFormat::laser;
   if (looks_like_text(head)) return ProfileFormat::csv;
   return ProfileFormat::unknown;
 }

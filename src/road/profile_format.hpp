@@ -8,7 +8,7 @@ namespace rollnoise {
 enum class ProfileFormat {
   csv,      // text: a profile CSV (profile_csv.hpp) or a CSV height map
   hdf5,     // the HDF5 signature at offset 0, 512, 1024, ...: an HDF5 height map (height_map_hdf5.hpp)
-  laser,    // a laser profilometer export (laser_profile.hpp)
+  laser,    // a laser profilometer export (laser_profile.hpp: looks_like_laser_profile)
   unknown,  // none of these (binary data that is not HDF5, an empty file)
 };
 
@@ -19,9 +19,5 @@ std::string_view to_string(ProfileFormat format);
 // format, then text (no NUL bytes, valid as CSV to look at: the CSV reader then says precisely
 // what is wrong). A missing or unreadable file is an InputError naming it.
 ProfileFormat detect_profile_format(const std::filesystem::path& path);
-
-// Whether `head` (the first bytes of a file) is a laser profilometer export. Until branch
-// road-analysis merges (laser_profile.hpp, looks_like_laser_profile), this returns false.
-bool looks_like_laser_profile_when_merged(std::string_view head);
 
 }  // namespace rollnoise

@@ -63,11 +63,17 @@ std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) 
 
 std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
   const std::string name = road.text("file");
-  if (name.empty()) road.fail("file", "must name a CSV file (columns x,z in m)");
+  if (name.empty()) {
+    road.fail("file", "must name a profile file (a CSV with columns x,z in m, or x_mm,z_mm; or a laser "
+                      "profilometer export)");
+  }
+  // ISO 13473-1 spike removal suits measured texture; a made-up profile's steep steps are meant.
+  const SpikeHandling spikes =
+      road.choice("spikes", {"remove", "keep"}, "remove") == "keep" ? SpikeHandling::keep : SpikeHandling::remove;
   road.reject_unknown_keys();
   // Relative to the file that set the key (the case file, or a model file it includes).
   const auto path = resolve_referenced_file(name, road.source_of("file"));
-  return std::make_unique<FileRoad>(path, x_min, x_max);
+  return std::make_unique<FileRoad>(path, x_min, x_max, spikes);
 }
 
 }  // namespace

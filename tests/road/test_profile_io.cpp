@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -370,6 +371,27 @@ TEST_F(ProfileIo, FormatIsToldByContent) {
   EXPECT_MENTIONS(error_of([&] { (void)load_profile_file(write("f.bin", std::string("\x01\x02\x03", 3))); }),
                   "is not a profile file");
   EXPECT_EQ(to_string(ProfileFormat::hdf5), "hdf5");
+}
+
+}  // namespace
+}  // namespace rollnoise
+
+namespace rollnoise {
+namespace {
+
+TEST(ProfileFormatLaser, CaptifRecordIsDetectedAndLoaded) {
+  const std::filesystem::path record =
+      std::filesystem::path(ROLLNOISE_SOURCE_DIR) / "data/surfaces/captif/20211011_aylesbury_dec_station_0.dat";
+  ASSERT_TRUE(std::filesystem::exists(record)) << record;
+  EXPECT_EQ(detect_profile_format(record), ProfileFormat::laser);
+  const LoadedProfile p = load_profile_file(record);
+  ASSERT_EQ(p.z_lines.size(), 1u);
+  EXPECT_GT(p.spacing_m, 0.0);
+  EXPECT_EQ(p.x.size(), p.z_lines[0].size());
+  EXPECT_GT(p.x.size(), 1000u);
+  for (double z : p.z_lines[0]) ASSERT_TRUE(std::isfinite(z));
+  std::printf("  CAPTIF record: %zu samples at %.4g mm, %zu dropouts, %zu spikes\n", p.x.size(),
+              p.spacing_m * 1e3, p.dropouts, p.spikes);
 }
 
 }  // namespace
