@@ -132,9 +132,10 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
   const fs::path file_path = resolve_referenced_file(named, path_);
   std::error_code ec;
   if (!fs::exists(file_path, ec)) {
-    // List what there is: in the folder the path points into, or else in the library folder.
-    fs::path folder = file_path.parent_path();
-    if (folder.empty() || !fs::is_directory(folder, ec)) folder = resolve_referenced_file(library_folder, path_);
+    // List what there is: in the library folder (models/surfaces, found like the file), or else
+    // in the folder the path points into.
+    fs::path folder = resolve_referenced_file(library_folder, path_);
+    if (!fs::is_directory(folder, ec)) folder = file_path.parent_path();
     const std::vector<std::string> available = toml_files_in(folder);
     std::string problem = "no " + kind + " file \"" + named + "\": file not found (tried " + file_path.string() + ")";
     if (!available.empty()) {
