@@ -9,7 +9,9 @@
 // z finite, or NaN where the instrument gave no reading (a dropout). The `units` attribute is
 // required on each dataset (a string, fixed or variable length). Sizes are bounded: at most
 // max_height_map_values values in /z. Every problem (not HDF5, corrupted, missing dataset or
-// attribute, wrong shape) is an InputError naming the file and the dataset.
+// attribute, wrong shape) is an InputError naming the file and the dataset. The HDF5 library
+// (1.10) can crash on a corrupted file, so the file is read in a child process
+// (core/child_process.hpp): a crash there is an InputError here.
 #include <cstddef>
 #include <filesystem>
 #include <string>
