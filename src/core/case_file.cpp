@@ -1,5 +1,6 @@
 #include "core/case_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -97,29 +98,70 @@ void CaseFile::apply_overrides(const std::vector<std::string>& overrides,
   }
 }
 
+namespace {
+
+// The names (without .toml) of the TOML files in `folder`, sorted; empty when it is no folder.
+std::vector<std::string> toml_files_in(const fs::path& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return names;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() == ".toml" && it->is_regular_file(ec)) names.push_back(it->path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+void CaseFile::merge_library_file(const std::string& section, const std::string& key,
+                                  const std::string& library_folder, const std::string& kind) {
+  toml::table* table = root_[section].as_table();
+  if (!table) return;
+  const toml::node* ref = table->get(key);
+  if (!ref) return;
+  const std::string dotted = section + "." + key;
+  const std::string where = "[" + section + "] " + key;
+  const auto provenance = provenance_->find(dotted);
+  const std::string key_source = provenance == provenance_->end() ? name() : provenance->second;
+  if (!ref->is_string()) {
+    throw InputError(key_source, where, "must be a string (the path of a " + kind + " file, such as \"" +
+                                            library_folder + "/NAME.toml\")");
+  }
+  const std::string named = *ref->value<std::string>();
+  const fs::path file_path = resolve_referenced_file(named, path_);
+  std::error_code ec;
+  if (!fs::exists(file_path, ec)) {
+    // List what there is: in the library folder (models/surfaces, found like the file), or else
+    // in the folder the path points into.
+    fs::path folder = resolve_referenced_file(library_folder, path_);
+    if (!fs::is_directory(folder, ec)) folder = file_path.parent_path();
+    const std::vector<std::string> available = toml_files_in(folder);
+    std::string problem = "no " + kind + " file \"" + named + "\": file not found (tried " + file_path.string() + ")";
+    if (!available.empty()) {
+      problem += "; the " + kind + " files in " + folder.string() + " are ";
+      for (std::size_t i = 0; i < available.size(); ++i) problem += (i ? ", " : "") + available[i];
+    }
+    throw InputError(key_source, where, problem);
+  }
+  toml::table library = parse_toml_file(file_path);
+  // Keys beside `key` override the library file's.
+  for (auto& [k, node] : *table) {
+    if (k.str() != key) library.insert_or_assign(k.str(), node);
+  }
+  for (const auto& [k, node] : library) {
+    if (!table->contains(k.str())) (*provenance_)[section + "." + std::string(k.str())] = file_path.string();
+  }
+  root_.insert_or_assign(section, std::move(library));
+}
+
 CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& overrides) {
   CaseFile file(path, parse_toml_file(path));
-  // Overrides first, so that --set tyre.file=... picks the model file.
+  // Overrides first, so that --set tyre.file=... picks the model file (and --set
+  // road.surface=... the surface), and so that --set road.key=... overrides the library file.
   file.apply_overrides(overrides, "");
-  if (toml::table* tyre = file.root_["tyre"].as_table()) {
-    if (const toml::node* ref = tyre->get("file")) {
-      if (!ref->is_string()) {
-        throw InputError(file.name(), "[tyre] file", "must be a string (a model file path)");
-      }
-      const fs::path model_path = resolve_referenced_file(*ref->value<std::string>(), path);
-      toml::table model = parse_toml_file(model_path);
-      // Keys beside `file` override the model file's.
-      for (auto& [key, node] : *tyre) {
-        if (key.str() != "file") model.insert_or_assign(key.str(), node);
-      }
-      for (const auto& [key, node] : model) {
-        if (!tyre->contains(key.str())) {
-          (*file.provenance_)["tyre." + std::string(key.str())] = model_path.string();
-        }
-      }
-      file.root_.insert_or_assign("tyre", std::move(model));
-    }
-  }
+  file.merge_library_file("tyre", "file", "models/tyres", "model");
+  file.merge_library_file("road", "surface", "models/surfaces", "surface");
   return file;
 }
 

@@ -19,9 +19,13 @@ toml::table parse_toml_file(const std::filesystem::path& path);
 
 class CaseFile {
  public:
-  // Loads `path`, merges the model file named by `[tyre] file` (keys given beside `file`
-  // override the model file's), then applies `overrides` ("section.key=value"; the value is
-  // read as TOML, and as a plain string if it is not valid TOML).
+  // Loads `path`, applies `overrides` ("section.key=value"; the value is read as TOML, and as
+  // a plain string if it is not valid TOML), then merges the library files: the model file
+  // named by `[tyre] file` and the surface file named by `[road] surface` (each holds the keys
+  // of its table at its top level; keys given beside `file` / `surface`, in the case or by
+  // --set, override the library file's). Every key keeps the file it came from, for messages.
+  // A library file that is not found is an InputError naming the key, the path tried and the
+  // files in its folder (or in models/tyres, models/surfaces).
   static CaseFile load(const std::filesystem::path& path,
                        const std::vector<std::string>& overrides = {});
   // A model file: the keys of a [tyre] table at the top level.
@@ -45,6 +49,9 @@ class CaseFile {
  private:
   CaseFile(std::filesystem::path path, toml::table root);
   void apply_overrides(const std::vector<std::string>& overrides, const std::string& prefix);
+  // Replaces [section] by the TOML file its `key` names, with the section's other keys on top.
+  void merge_library_file(const std::string& section, const std::string& key, const std::string& library_folder,
+                          const std::string& kind);
 
   std::filesystem::path path_;
   toml::table root_;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -49,7 +50,7 @@ std::size_t NumericCsv::column(const std::string& name, const std::string& sourc
   throw InputError(source, "header", "no column \"" + name + "\" (columns are: " + have + ")");
 }
 
-NumericCsv parse_numeric_csv(const std::string& text, const std::string& source) {
+NumericCsv parse_numeric_csv(const std::string& text, const std::string& source, EmptyCells empty) {
   NumericCsv csv;
   std::size_t line_number = 0;
   std::size_t pos = 0;
@@ -84,6 +85,10 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source)
     }
     for (std::size_t c = 0; c < fields.size(); ++c) {
       const auto field = fields[c];
+      if (field.empty() && empty == EmptyCells::as_nan) {
+        csv.columns[c].push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
       double value = 0.0;
       const char* first = field.data();
       const char* last = field.data() + field.size();
@@ -95,16 +100,18 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source)
       }
       if (!std::isfinite(value)) {
         throw InputError(source, where + ", column \"" + csv.header[c] + "\"",
-                         "must be a finite number (got " + printable_excerpt(field) + ")");
+                         "must be a finite number (got " + printable_excerpt(field) + ")" +
+                             (empty == EmptyCells::as_nan ? "; leave the cell empty for a missing value (a dropout)" : ""));
       }
       csv.columns[c].push_back(value);
     }
+    csv.row_lines.push_back(line_number);
   }
   if (!have_header) throw InputError(source, "", "no header line (expected column names)");
   return csv;
 }
 
-NumericCsv read_numeric_csv(const std::filesystem::path& path) {
+std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw InputError(path.string(), "", "file not found (or not a regular file)");
@@ -113,7 +120,11 @@ NumericCsv read_numeric_csv(const std::filesystem::path& path) {
   if (!in) throw InputError(path.string(), "", "cannot be opened for reading");
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  return parse_numeric_csv(buffer.str(), path.string());
+  return buffer.str();
+}
+
+NumericCsv read_numeric_csv(const std::filesystem::path& path, EmptyCells empty) {
+  return parse_numeric_csv(read_text_file(path), path.string(), empty);
 }
 
 std::string format_number(double value) {

@@ -14,15 +14,26 @@ struct NumericCsv {
   std::vector<std::string> header;
   std::vector<std::vector<double>> columns;  // columns[c][row]
   std::vector<std::string> comments;         // comment lines, without the leading '#'
+  std::vector<std::size_t> row_lines;        // the line number (from 1) of each data row
 
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
   // Index of a column by name; InputError (naming `source`) when absent.
   std::size_t column(const std::string& name, const std::string& source) const;
 };
 
+// What a data cell may hold besides a finite number.
+enum class EmptyCells {
+  reject,   // an empty cell is an InputError (the default)
+  as_nan,   // an empty cell (nothing but blanks between the commas) reads as NaN: a measurement
+            // with no value, such as a profilometer dropout. Text such as "nan" is still rejected.
+};
+
 // Parses CSV text; `source` names it in messages. Non-finite values are rejected.
-NumericCsv parse_numeric_csv(const std::string& text, const std::string& source);
-NumericCsv read_numeric_csv(const std::filesystem::path& path);
+NumericCsv parse_numeric_csv(const std::string& text, const std::string& source,
+                             EmptyCells empty = EmptyCells::reject);
+NumericCsv read_numeric_csv(const std::filesystem::path& path, EmptyCells empty = EmptyCells::reject);
+// The whole content of a file; InputError naming it when it is missing or unreadable.
+std::string read_text_file(const std::filesystem::path& path);
 
 // `text` without leading and trailing blanks, tabs and carriage returns.
 std::string_view trim_blanks(std::string_view text);

@@ -7,16 +7,60 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "road/line_cleaning.hpp"
+#include "road/profile_csv.hpp"
+#include "road/profile_file.hpp"
+#include "road/profile_format.hpp"
 
 namespace rollnoise {
 namespace {
 
-std::pair<std::vector<double>, std::vector<double>> read_profile(const std::filesystem::path& path) {
-  NumericCsv csv = read_numeric_csv(path);  // its errors name the file already
+FileRoad::Rows read_profile(const std::filesystem::path& path, SpikeHandling spikes) {
   const std::string source = path.string();
-  const std::size_t cx = csv.column("x", source);
-  const std::size_t cz = csv.column("z", source);
-  return {std::move(csv.columns[cx]), std::move(csv.columns[cz])};
+  const ProfileFormat format = detect_profile_format(path);
+  if (format == ProfileFormat::hdf5) {
+    throw InputError(source, "",
+                     "is an HDF5 height map (a 2-D surface); a 1-D profile (type = \"file\") is a CSV "
+                     "with columns x and z; use type = \"surface\" with a tyre model for a height map");
+  }
+  if (format != ProfileFormat::csv) {
+    // The laser profilometer export (and anything unknown, which this rejects): the loader
+    // cleans on its uniform grid.
+    LoadedProfile loaded = load_profile_file(path);
+    if (loaded.z_lines.size() != 1) {
+      throw InputError(source, "", "holds " + std::to_string(loaded.z_lines.size()) +
+                                       " height lines; a 1-D profile (type = \"file\") takes one");
+    }
+    return {std::move(loaded.x), std::move(loaded.z_lines.front()), loaded.dropouts, loaded.spikes};
+  }
+  ProfileTable table = read_profile_csv(path);  // its errors name the file already
+  if (table.z_lines.size() != 1) {
+    throw InputError(source, "header",
+                     "has " + std::to_string(table.z_lines.size()) +
+                         " height columns (z_1 ...); a 1-D profile (type = \"file\") takes one column z");
+  }
+  FileRoad::Rows rows;
+  rows.x = std::move(table.x);
+  rows.z = std::move(table.z_lines.front());
+  if (spikes == SpikeHandling::remove && is_uniformly_spaced(rows.x)) {
+    const double spacing = (rows.x.back() - rows.x.front()) / static_cast<double>(rows.x.size() - 1);
+    const LineCleaning cleaning = clean_measured_line(rows.z, spacing, source);
+    rows.dropouts = cleaning.dropouts;
+    rows.spikes = cleaning.spikes;
+    return rows;
+  }
+  // Uneven rows, or spikes kept: leave the dropouts out, linear interpolation bridges them.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < rows.x.size(); ++i) {
+    if (std::isnan(rows.z[i])) continue;
+    rows.x[kept] = rows.x[i];
+    rows.z[kept] = rows.z[i];
+    ++kept;
+  }
+  rows.dropouts = rows.x.size() - kept;
+  rows.x.resize(kept);
+  rows.z.resize(kept);
+  return rows;
 }
 
 }  // namespace
@@ -44,13 +88,16 @@ FileRoad::FileRoad(std::vector<double> x, std::vector<double> z, std::string sou
   }
 }
 
-FileRoad::FileRoad(const std::filesystem::path& path, double x_min, double x_max)
-    : FileRoad(read_profile(path), path.string()) {
+FileRoad::FileRoad(const std::filesystem::path& path, double x_min, double x_max, SpikeHandling spikes)
+    : FileRoad(read_profile(path, spikes), path.string()) {
   check_covers(x_min, x_max);
 }
 
-FileRoad::FileRoad(std::pair<std::vector<double>, std::vector<double>> xz, std::string source)
-    : FileRoad(std::move(xz.first), std::move(xz.second), std::move(source)) {}
+FileRoad::FileRoad(Rows rows, std::string source)
+    : FileRoad(std::move(rows.x), std::move(rows.z), std::move(source)) {
+  dropouts_ = rows.dropouts;
+  spikes_ = rows.spikes;
+}
 
 std::string FileRoad::type() const { return "file"; }
 

@@ -1,6 +1,15 @@
 #pragma once
-// A measured or externally made profile, read from a CSV file with columns x and z (m),
-// interpolated linearly between its rows.
+// A measured or externally made profile, read from a profile CSV file (profile_csv.hpp: columns
+// x and z, in m or with a unit such as x_mm, z [mm]; one height line) or a laser profilometer
+// export, interpolated linearly between its rows: that linear interpolation is how the profile
+// is resampled to the contact grid of a run.
+//
+// Cleaning (ISO 13473-1, line_cleaning.hpp): when x is evenly spaced (profile_file.hpp's
+// test), dropouts (empty cells) are filled and spikes (steps |dz| >= 3 dx) replaced by
+// clean_profile. When it is not, or with SpikeHandling::keep (a made-up profile whose steep
+// steps are meant: a cleat, a kerb), spikes are not looked for and the rows with a dropout are
+// left out, so that linear interpolation bridges them. The counts are kept.
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -10,11 +19,14 @@
 
 namespace rollnoise {
 
+enum class SpikeHandling { remove, keep };
+
 class FileRoad final : public RoadProfile {
  public:
   // Reads `path` (header x,z; '#' comments) and checks that it covers the range the run needs,
   // [max(0, x_min), x_max]. Every problem is an InputError naming the file.
-  FileRoad(const std::filesystem::path& path, double x_min, double x_max);
+  FileRoad(const std::filesystem::path& path, double x_min, double x_max,
+           SpikeHandling spikes = SpikeHandling::remove);
   // From data already in memory; `source` names it in messages. x strictly increasing, at
   // least 2 rows, all values finite.
   FileRoad(std::vector<double> x, std::vector<double> z, std::string source);
@@ -27,14 +39,24 @@ class FileRoad final : public RoadProfile {
   double x_first() const { return x_.front(); }
   double x_last() const { return x_.back(); }
   const std::string& source() const noexcept { return source_; }
+  // Samples filled as dropouts (or rows left out) and replaced as spikes when reading the file.
+  std::size_t dropouts() const noexcept { return dropouts_; }
+  std::size_t spikes() const noexcept { return spikes_; }
+
+  struct Rows {
+    std::vector<double> x, z;
+    std::size_t dropouts = 0, spikes = 0;
+  };
 
  private:
-  FileRoad(std::pair<std::vector<double>, std::vector<double>> xz, std::string source);
+  FileRoad(Rows rows, std::string source);
   void check_covers(double x_min, double x_max) const;
 
   std::vector<double> x_;
   std::vector<double> z_;
   std::string source_;
+  std::size_t dropouts_ = 0;
+  std::size_t spikes_ = 0;
 };
 
 }  // namespace rollnoise

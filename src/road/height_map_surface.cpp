@@ -7,6 +7,9 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/hdf5_reader.hpp"
+#include "road/height_map_hdf5.hpp"
+#include "road/line_cleaning.hpp"
 
 namespace rollnoise {
 namespace {
@@ -69,14 +72,48 @@ NumericCsv read_map(const std::filesystem::path& path) {
 
 HeightMapSurface::HeightMapSurface(const std::filesystem::path& path, double x_min, double x_max,
                                    double half_width)
-    : HeightMapSurface(read_map(path), path.string(), x_min, x_max, half_width) {}
+    : source_(path.string()) {
+  check_run_range(x_min, x_max, half_width);
+  if (has_hdf5_signature(path)) {
+    HeightMapGrid grid = read_height_map_hdf5(path);
+    x_ = grid_lines(grid.x, "x", source_);
+    y_ = grid_lines(grid.y, "y", source_);
+    // Dropouts (NaN) filled and spikes replaced along each y line (ISO 13473-1 works along the
+    // direction of travel).
+    const std::size_t nx = x_.size();
+    const std::size_t ny = y_.size();
+    const double spacing = (x_.back() - x_.front()) / static_cast<double>(nx - 1);
+    std::vector<double> line(nx);
+    for (std::size_t j = 0; j < ny; ++j) {
+      for (std::size_t i = 0; i < nx; ++i) line[i] = grid.z[i * ny + j];
+      const LineCleaning cleaning =
+          clean_measured_line(line, spacing, source_ + " (y = " + format_number(y_[j]) + " m)");
+      dropouts_ += cleaning.dropouts;
+      spikes_ += cleaning.spikes;
+      for (std::size_t i = 0; i < nx; ++i) grid.z[i * ny + j] = line[i];
+    }
+    z_ = std::move(grid.z);
+  } else {
+    read_long_form(read_map(path));
+  }
+  check_covers(x_min, x_max, half_width);
+}
 
 HeightMapSurface::HeightMapSurface(const NumericCsv& csv, const std::string& source, double x_min,
                                    double x_max, double half_width)
     : source_(source) {
+  check_run_range(x_min, x_max, half_width);
+  read_long_form(csv);
+  check_covers(x_min, x_max, half_width);
+}
+
+void HeightMapSurface::check_run_range(double x_min, double x_max, double half_width) {
   if (std::isnan(x_min) || std::isnan(x_max) || !(half_width >= 0.0)) {
     throw std::invalid_argument("HeightMapSurface: the run's range must be numbers, half_width >= 0");
   }
+}
+
+void HeightMapSurface::read_long_form(const NumericCsv& csv) {
   const std::vector<double>& xs = csv.columns.at(csv.column("x", source_));
   const std::vector<double>& ys = csv.columns.at(csv.column("y", source_));
   const std::vector<double>& zs = csv.columns.at(csv.column("z", source_));
@@ -135,7 +172,6 @@ HeightMapSurface::HeightMapSurface(const NumericCsv& csv, const std::string& sou
   }
   z_.resize(rows);
   for (const auto& [point, row] : order) z_[point] = zs[row];
-  check_covers(x_min, x_max, half_width);
 }
 
 std::string HeightMapSurface::type() const { return "surface"; }

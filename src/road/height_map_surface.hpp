@@ -1,7 +1,9 @@
 #pragma once
 // A measured or externally made 2-D road surface: a height map read from a CSV file with
 // columns x, y, z (m) in long form, one row per point of a regular rectangular grid (any row
-// order), interpolated bilinearly. As for every road, r = 0 for x < 0 (road_profile.hpp).
+// order), or from an HDF5 file (/x, /y, /z with units attributes, height_map_hdf5.hpp; told by
+// its signature), interpolated bilinearly. HDF5 maps may mark dropouts with NaN: they are filled,
+// and spikes replaced, along each y line per ISO 13473-1 (line_cleaning.hpp). As for every road, r = 0 for x < 0 (road_profile.hpp).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -33,14 +35,21 @@ class HeightMapSurface final : public RoadSurface {
   const std::vector<double>& x_lines() const noexcept { return x_; }
   const std::vector<double>& y_lines() const noexcept { return y_; }
   const std::string& source() const noexcept { return source_; }
+  // Samples filled as dropouts and replaced as spikes (HDF5 maps).
+  std::size_t dropouts() const noexcept { return dropouts_; }
+  std::size_t spikes() const noexcept { return spikes_; }
 
  private:
+  static void check_run_range(double x_min, double x_max, double half_width);
+  void read_long_form(const NumericCsv& csv);
   void check_covers(double x_min, double x_max, double half_width) const;
 
   std::vector<double> x_;
   std::vector<double> y_;
   std::vector<double> z_;  // z_[i * y_.size() + j] at (x_[i], y_[j])
   std::string source_;
+  std::size_t dropouts_ = 0;
+  std::size_t spikes_ = 0;
 };
 
 }  // namespace rollnoise

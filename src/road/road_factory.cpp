@@ -90,11 +90,17 @@ std::unique_ptr<RoadProfile> make_aggregate(const ConfigTable& road, double x_ma
 
 std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
   const std::string name = road.text("file");
-  if (name.empty()) road.fail("file", "must name a CSV file (columns x,z in m)");
+  if (name.empty()) {
+    road.fail("file", "must name a profile file (a CSV with columns x,z in m, or x_mm,z_mm; or a laser "
+                      "profilometer export)");
+  }
+  // ISO 13473-1 spike removal suits measured texture; a made-up profile's steep steps are meant.
+  const SpikeHandling spikes =
+      road.choice("spikes", {"remove", "keep"}, "remove") == "keep" ? SpikeHandling::keep : SpikeHandling::remove;
   road.reject_unknown_keys();
   // Relative to the file that set the key (the case file, or a model file it includes).
   const auto path = resolve_referenced_file(name, road.source_of("file"));
-  return std::make_unique<FileRoad>(path, x_min, x_max);
+  return std::make_unique<FileRoad>(path, x_min, x_max, spikes);
 }
 
 }  // namespace
@@ -102,6 +108,11 @@ std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, do
 std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max) {
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_profile: the x range must be numbers");
+  }
+  // A library surface file's descriptive [about] table (name, description, mpd_m, sources, ...)
+  // is for people and tools, not for building the road.
+  if (const toml::node* about = road.raw("about"); about && !about->is_table()) {
+    road.fail("about", "must be a table of descriptive keys ([about] name = ..., description = ...)");
   }
   // The 2-D surfaces (road_surface.hpp) vary across the road: only a tyre model with lateral
   // lines can roll over them. Named here so that a point model gets a message that says so

@@ -22,7 +22,8 @@ class RoadProfile {
 
 // Builds the profile of a [road] table. The run will look at x in [x_min, x_max]; profiles
 // that are generated or read cover at least that range (a file that does not is an
-// InputError). Unknown keys are rejected.
+// InputError). Unknown keys are rejected; an [about] table (a library surface file's
+// description, models/surfaces) is ignored.
 std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max);
 
 }  // namespace rollnoise

@@ -94,6 +94,11 @@ std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x
   if (!(half_width >= 0.0) || !std::isfinite(half_width)) {
     throw std::invalid_argument("make_road_surface: half_width must be finite and >= 0");
   }
+  // A library surface file's descriptive [about] table (name, description, mpd_m, sources, ...)
+  // is for people and tools, not for building the road.
+  if (const toml::node* about = road.raw("about"); about && !about->is_table()) {
+    road.fail("about", "must be a table of descriptive keys ([about] name = ..., description = ...)");
+  }
   const std::string type = road.choice(
       "type", {"flat", "sine", "random", "file", "cleat", "iso8608", "random_surface", "surface", "texture", "aggregate"});
   if (type == "random_surface") return make_random_surface(road, x_max, half_width);

@@ -1,0 +1,155 @@
+#include "road/height_map_hdf5.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+#include "core/child_process.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/hdf5_reader.hpp"
+#include "road/profile_csv.hpp"
+
+namespace rollnoise {
+namespace {
+
+// The factor from the dataset's `units` attribute to metres.
+double units_of(const Hdf5Reader& file, const std::string& dataset) {
+  const auto units = file.string_attribute(dataset, "units");
+  if (!units) {
+    throw InputError(file.source(), dataset,
+                     "has no attribute \"units\"; add one: \"m\", \"mm\" or \"um\"");
+  }
+  const double scale = unit_to_metres(*units);
+  if (scale == 0.0) {
+    throw InputError(file.source(), dataset + " attribute units",
+                     "unknown unit \"" + printable_excerpt(*units) + "\"; allowed units are \"m\", \"mm\" and \"um\"");
+  }
+  return scale;
+}
+
+std::vector<double> grid_axis(const Hdf5Reader& file, const std::string& dataset, std::size_t min_count) {
+  Hdf5Array array = file.read_numbers(dataset, 1, max_height_map_values);
+  const double scale = units_of(file, dataset);
+  std::vector<double>& v = array.values;
+  if (v.size() < min_count) {
+    throw InputError(file.source(), dataset,
+                     "has " + std::to_string(v.size()) + " values; at least " + std::to_string(min_count) + " needed");
+  }
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k] *= scale;
+    if (!std::isfinite(v[k])) {
+      throw InputError(file.source(), dataset + "[" + std::to_string(k) + "]", "must be a finite number");
+    }
+    if (k > 0 && !(v[k] > v[k - 1])) {
+      throw InputError(file.source(), dataset + "[" + std::to_string(k) + "]",
+                       format_number(v[k]) + " m is not greater than the value before (" + format_number(v[k - 1]) +
+                           " m); the grid lines must be strictly increasing");
+    }
+  }
+  return std::move(v);
+}
+
+HeightMapGrid read_in_this_process(const std::filesystem::path& path) {
+  const Hdf5Reader file(path);
+  HeightMapGrid out;
+  out.source = file.source();
+  out.x = grid_axis(file, "/x", 2);
+  out.y = grid_axis(file, "/y", 1);
+  Hdf5Array z = file.read_numbers("/z", 2, max_height_map_values);
+  const std::size_t nx = out.x.size();
+  const std::size_t ny = out.y.size();
+  const bool shaped = z.dims.size() == 2 && z.dims[0] == nx && z.dims[1] == ny;
+  if (!shaped) {
+    std::string shape;
+    for (std::size_t d : z.dims) shape += (shape.empty() ? "" : " x ") + std::to_string(d);
+    const bool transposed = z.dims.size() == 2 && z.dims[0] == ny && z.dims[1] == nx;
+    throw InputError(out.source, "/z",
+                     "has shape " + shape + "; it must be [x][y], " + std::to_string(nx) + " x " + std::to_string(ny) +
+                         (transposed ? " (it looks transposed: [y][x])" : ""));
+  }
+  const double scale = units_of(file, "/z");
+  for (std::size_t k = 0; k < z.values.size(); ++k) {
+    double& v = z.values[k];
+    if (std::isnan(v)) {
+      ++out.dropouts;
+      continue;
+    }
+    v *= scale;
+    if (!std::isfinite(v)) {
+      throw InputError(out.source, "/z[" + std::to_string(k / ny) + "][" + std::to_string(k % ny) + "]",
+                       "must be a finite number, or NaN for a dropout");
+    }
+  }
+  if (out.dropouts == z.values.size()) {
+    throw InputError(out.source, "/z", "has no value at all (every value is NaN, a dropout)");
+  }
+  out.z = std::move(z.values);
+  return out;
+}
+
+void put(std::string& out, std::uint64_t n) { out.append(reinterpret_cast<const char*>(&n), sizeof n); }
+void put(std::string& out, const std::vector<double>& v) {
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+std::uint64_t get_count(const std::string& in, std::size_t& pos) {
+  std::uint64_t n = 0;
+  if (in.size() - pos < sizeof n) throw std::runtime_error("height map: short result from the reading process");
+  std::memcpy(&n, in.data() + pos, sizeof n);
+  pos += sizeof n;
+  return n;
+}
+std::vector<double> get_values(const std::string& in, std::size_t& pos, std::uint64_t n) {
+  if ((in.size() - pos) / sizeof(double) < n) throw std::runtime_error("height map: short result from the reading process");
+  std::vector<double> v(static_cast<std::size_t>(n));
+  std::memcpy(v.data(), in.data() + pos, v.size() * sizeof(double));
+  pos += v.size() * sizeof(double);
+  return v;
+}
+
+// Time for the reading process: 2 s plus 1 s per MB, ample for a sound file (a corrupted one
+// can send the library into an endless loop).
+std::chrono::milliseconds read_time_allowed(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const auto megabytes = ec ? 0 : static_cast<std::int64_t>(size >> 20);
+  return std::chrono::milliseconds(2000 + 1000 * megabytes);
+}
+
+}  // namespace
+
+HeightMapGrid read_height_map_hdf5(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  // The HDF5 library can crash on a corrupted file: it reads in a child process (child_process.hpp).
+  const std::string bytes = run_in_child_process(
+      [&] {
+        const HeightMapGrid grid = read_in_this_process(path);
+        std::string out;
+        put(out, grid.x.size());
+        put(out, grid.y.size());
+        put(out, grid.dropouts);
+        put(out, grid.x);
+        put(out, grid.y);
+        put(out, grid.z);
+        return out;
+      },
+      source, "the HDF5 library", 3 * sizeof(std::uint64_t) + 3 * max_height_map_values * sizeof(double),
+      read_time_allowed(path));
+  HeightMapGrid grid;
+  grid.source = source;
+  std::size_t pos = 0;
+  const std::uint64_t nx = get_count(bytes, pos);
+  const std::uint64_t ny = get_count(bytes, pos);
+  grid.dropouts = static_cast<std::size_t>(get_count(bytes, pos));
+  if (nx > max_height_map_values || ny > max_height_map_values || nx * ny > max_height_map_values) {
+    throw std::runtime_error("height map: malformed result from the reading process");
+  }
+  grid.x = get_values(bytes, pos, nx);
+  grid.y = get_values(bytes, pos, ny);
+  grid.z = get_values(bytes, pos, nx * ny);
+  return grid;
+}
+
+}  // namespace rollnoise
