@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "analyse_command.hpp"
 #include "calibrate_command.hpp"
+#include "road_command.hpp"
 #include "simulate_command.hpp"
 
 namespace {
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
   CLI::App* analyse_cmd = rollnoise::add_analyse_command(app, analyse);
   rollnoise::CalibrateOptions calibrate;
   CLI::App* calibrate_cmd = rollnoise::add_calibrate_command(app, calibrate);
+  rollnoise::RoadOptions road;
+  CLI::App* road_cmd = rollnoise::add_road_command(app, road);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -43,7 +46,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
     if (simulate_cmd->parsed()) return rollnoise::run_simulate(simulate);
     if (analyse_cmd->parsed()) return rollnoise::run_analyse(analyse);
     if (calibrate_cmd->parsed()) return rollnoise::run_calibrate(calibrate);
+    if (road_cmd->parsed()) return rollnoise::run_road(road);
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;
