@@ -1,0 +1,73 @@
+// Spatial averages of the plate's mobility (greens/plate_mobility_average.hpp), used by the
+// energy budget's velocity estimate: the closed form by modal orthogonality against a direct
+// average of |KroppPlate::mobility|² over a grid, and the near-field average over the whole
+// circumference against the closed form.
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "greens/plate_mobility_average.hpp"
+
+namespace rollnoise {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+PlateParameters small_tyre() {
+  PlateParameters p;
+  p.radius = 0.316;
+  p.width = 0.18;
+  p.mass_per_area = 12.0;
+  p.tension_x = 6e4;
+  p.tension_y = 9e3;
+  p.bending_x = 7;
+  p.bending_y = 3;
+  p.bending_xy = 4.6;
+  p.foundation_stiffness = 3.2e6;
+  p.loss_factor = 0.1;
+  p.circumferential_modes = 24;
+  p.lateral_modes = 5;
+  return p;
+}
+
+// The mobility is a trigonometric polynomial of order M in x and a sine series of order N in y:
+// the midpoint rule with more than 2M points around and 2N + 1 across averages |Y|² exactly.
+double grid_average(const KroppPlate& plate, double y0, double omega, double half_length, int nx, int ny) {
+  const double b = plate.parameters().width;
+  double sum = 0.0;
+  for (int i = 0; i < nx; ++i) {
+    const double x = -half_length + (i + 0.5) * 2.0 * half_length / nx;
+    for (int j = 0; j < ny; ++j) sum += std::norm(plate.mobility(x, (j + 0.5) * b / ny, y0, omega));
+  }
+  return sum / (nx * ny);
+}
+
+TEST(PlateMobilityAverage, BeltMeanByOrthogonalityEqualsTheGridAverage) {
+  const KroppPlate plate(small_tyre());
+  const double L = plate.circumference();
+  for (double f : {90.0, 400.0, 1500.0}) {
+    for (double y0 : {0.09, 0.05}) {
+      const double omega = 2 * kPi * f;
+      const double closed = belt_mean_square_mobility(plate, y0, omega);
+      const double grid = grid_average(plate, y0, omega, 0.5 * L, 64, 16);
+      EXPECT_NEAR(closed, grid, 1e-10 * grid) << f << " Hz, y0 = " << y0;
+      EXPECT_NEAR(near_mean_square_mobility(plate, y0, omega, 0.5 * L, L / 64), closed, 1e-10 * closed);
+    }
+  }
+}
+
+TEST(PlateMobilityAverage, NearMeanEqualsTheGridAverageOverTheStretch) {
+  const KroppPlate plate(small_tyre());
+  const double omega = 2 * kPi * 700.0, d = 0.3;
+  // Both integrate x by the midpoint rule on the same points; y exactly.
+  const double near = near_mean_square_mobility(plate, 0.09, omega, d, 0.6 / 120);
+  const double grid = grid_average(plate, 0.09, omega, d, 120, 16);
+  EXPECT_NEAR(near, grid, 1e-10 * grid);
+  // Near the drive point the belt moves more than on average.
+  EXPECT_GT(near, belt_mean_square_mobility(plate, 0.09, omega));
+}
+
+}  // namespace
+}  // namespace rollnoise
