@@ -61,7 +61,7 @@ TEST(TextureUnderContact, SineTextureLandsInBandVOverLambdaAtItsLevel) {
   // A²/2 up to the window's ripple at 2f (relative ~1e-4) and the main lobe (±2 bins = ±11 Hz)
   // lies well inside the band (891–1122 Hz). Required 0.1 dB.
   EXPECT_NEAR(got_db, expected_db, 0.1);
-  std::printf("sine 0.1 mm at 22.2 mm, 80 km/h: 1 kHz band %.4f dB, expected %.4f dB (error %.4f dB)\n", got_db,
+  std::printf("sine 0.1 mm at 22.2 mm, 80 km/h: 1 kHz band %.4f dB, expected %.4f dB (error %.2e dB)\n", got_db,
               expected_db, got_db - expected_db);
   // The neighbours hold only the window's side lobes.
   EXPECT_LT(level_db(ms[at - 1], 1e-6), expected_db - 30.0);

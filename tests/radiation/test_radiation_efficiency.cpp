@@ -57,7 +57,7 @@ TEST(RadiationEfficiency, ClosedFormsAndTheirLimits) {
   EXPECT_NEAR(pulsating_cylinder_radiation_efficiency(1e-3) / (kPi * 1e-3 / 2), 1.0, 1e-3);
   EXPECT_NEAR(pulsating_cylinder_radiation_efficiency(200.0), 1.0, 2e-3);
   EXPECT_THROW(radiation_efficiency(1.0, 1.2, 343.0, 1.0, 0.0), std::invalid_argument);
-  EXPECT_DOUBLE_EQ(radiation_efficiency(1.0, 2.0, 5.0, 0.5, 0.4), 1.0);
+  EXPECT_DOUBLE_EQ(radiation_efficiency(1.0, 2.0, 5.0, 0.5, 0.4), 0.5);  // 1/(2·5·0.5·0.4)
 }
 
 }  // namespace
