@@ -4,6 +4,7 @@
 // discrete average over the patch's columns. And the single-point force estimate's limits.
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "acoustics/band_power.hpp"
 #include "contact/contact_force_estimate.hpp"
 #include "contact/texture_under_contact.hpp"
+#include "greens/passenger_plate.hpp"
 
 namespace rollnoise {
 namespace {
@@ -86,19 +88,7 @@ TEST(TextureUnderContact, PatchMeanIsTheAverageOverThePatchColumns) {
 }
 
 TEST(ContactForceEstimate, SoftTreadPassesItsOwnStiffnessAndStiffTreadTheBelts) {
-  PlateParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.mass_per_area = 12.0;
-  p.tension_x = 6e4;
-  p.tension_y = 9e3;
-  p.bending_x = 7;
-  p.bending_y = 3;
-  p.bending_xy = 4.6;
-  p.foundation_stiffness = 3.2e6;
-  p.loss_factor = 0.1;
-  p.circumferential_modes = 64;
-  p.lateral_modes = 9;
+  const PlateParameters p = test::passenger_plate(64, 9);
   const KroppPlate plate(p);
   const double omega = 2 * kPi * 500.0, y0 = 0.09;
   // A tread far softer than the belt: |F/r|² → k_c².

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "greens/passenger_plate.hpp"
 #include "greens/plate_mobility_average.hpp"
 
 namespace rollnoise {
@@ -15,22 +16,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-PlateParameters small_tyre() {
-  PlateParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.mass_per_area = 12.0;
-  p.tension_x = 6e4;
-  p.tension_y = 9e3;
-  p.bending_x = 7;
-  p.bending_y = 3;
-  p.bending_xy = 4.6;
-  p.foundation_stiffness = 3.2e6;
-  p.loss_factor = 0.1;
-  p.circumferential_modes = 24;
-  p.lateral_modes = 5;
-  return p;
-}
+PlateParameters small_tyre() { return test::passenger_plate(24, 5); }
 
 // The mobility is a trigonometric polynomial of order M in x and a sine series of order N in y:
 // the midpoint rule with more than 2M points around and 2N + 1 across averages |Y|² exactly.

@@ -10,22 +10,14 @@
 
 #include "radiation/equivalent_sources.hpp"
 #include "radiation/radiation_efficiency.hpp"
+#include "radiation/sphere_points.hpp"
 
 namespace rollnoise {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Eigen::Matrix3Xd fibonacci_sphere(int n) {
-  Eigen::Matrix3Xd p(3, n);
-  const double golden = kPi * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < n; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / static_cast<double>(n);
-    const double r = std::sqrt(1.0 - z * z);
-    p.col(i) << r * std::cos(golden * i), r * std::sin(golden * i), z;
-  }
-  return p;
-}
+using test::fibonacci_sphere;
 
 // A sphere moving uniformly (a "piston" wrapped round): the equivalent sources give W = ½qᴴSq
 // for the uniform velocity amplitude v0, ⟨v²⟩ = v0²/2, S = 4πa².
