@@ -69,4 +69,23 @@ double near_mean_square_mobility(const KroppPlate& plate, double y0, double omeg
   return 0.5 * omega * omega * sum / (plate.modal_mass() * plate.modal_mass());
 }
 
+std::complex<double> patch_receptance(const KroppPlate& plate, double length, double width, double omega) {
+  const PlateParameters& p = plate.parameters();
+  if (!(length > 0.0 && length <= plate.circumference())) throw std::invalid_argument("patch_receptance: bad length");
+  if (!(width > 0.0 && width <= p.width)) throw std::invalid_argument("patch_receptance: width must be in (0, b]");
+  std::complex<double> sum = 0.0;
+  for (int n = 1; n <= p.lateral_modes; ++n) {
+    const double k = plate.wavenumber_y(n);
+    const double across = (std::cos(0.5 * k * (p.width - width)) - std::cos(0.5 * k * (p.width + width))) / (k * width);
+    if (across == 0.0) continue;
+    const std::vector<std::complex<double>> h = modal_responses(plate, n, omega);
+    for (std::size_t m = 0; m < h.size(); ++m) {
+      const double a = 0.5 * plate.wavenumber_x(static_cast<int>(m)) * length;
+      const double along = m == 0 ? 1.0 : std::sin(a) / a;
+      sum += (m == 0 ? 1.0 : 2.0) * along * along * across * across * h[m];  // ±m
+    }
+  }
+  return sum / plate.modal_mass();
+}
+
 }  // namespace rollnoise

@@ -229,7 +229,7 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   // radiated band (1.25 kHz here), the stages and their estimates, a level per receiver.
   EXPECT_EQ(first_line(out / "budget.csv"),
             "band_hz,wavelength_m,texture_centre_dB_re_1um,texture_patch_dB_re_1um,force_dB_re_1N,"
-            "force_est_point_dB_re_1N,force_est_patch_dB_re_1N,v2_tread_dB_re_1nm_s,v2_contact_dB_re_1nm_s,"
+            "force_est_point_dB_re_1N,force_est_patch_dB_re_1N,force_est_rigid_patch_dB_re_1N,v2_tread_dB_re_1nm_s,v2_contact_dB_re_1nm_s,"
             "v2_tread_est_dB_re_1nm_s,v2_contact_est_dB_re_1nm_s,v2_radiating_dB_re_1nm_s,Lw_dB_re_1pW,sigma,"
             "sigma_piston,sigma_cylinder,Lp_cpx_front_dB_re_20uPa,Lp_cpx_front_hemi_est_dB_re_20uPa,"
             "Lp_cpx_rear_dB_re_20uPa,Lp_cpx_rear_hemi_est_dB_re_20uPa,Lp_spb_dB_re_20uPa,"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -76,6 +77,7 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TyreGrid& grid, cons
   b.segment_length = welch_segment_for(static_cast<std::size_t>(trace.time.size()), budget_max_segment);
   b.contact_stiffness = contact_stiffness;
   b.patch_length = trace.contact_length.mean();
+  b.patch_width = std::min(trace.contact_width.mean(), plate.parameters().width);
 
   // Texture: the centre line(s), band powers averaged over the lines; and the patch mean.
   const std::vector<std::vector<double>> lines = centre_line_road(trace, grid);
@@ -98,6 +100,12 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TyreGrid& grid, cons
       b.bands, [&](double f) { return single_point_force_transfer(plate, contact_stiffness, y0, two_pi * f); });
   b.force_estimate_point = times(transfer, b.texture_centre);
   b.force_estimate_patch = times(transfer, b.texture_patch);
+  const std::vector<double> rigid_patch = band_means_of(b.bands, [&](double f) {
+    const std::complex<double> c =
+        1.0 / contact_stiffness + patch_receptance(plate, b.patch_length, b.patch_width, two_pi * f);
+    return 1.0 / std::norm(c);
+  });
+  b.force_estimate_rigid_patch = times(rigid_patch, b.texture_patch);
   const std::vector<double> y2_belt =
       band_means_of(b.bands, [&](double f) { return belt_mean_square_mobility(plate, y0, two_pi * f); });
   const std::vector<double> y2_near = band_means_of(
@@ -155,6 +163,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
                                   "force_dB_re_1N",
                                   "force_est_point_dB_re_1N",
                                   "force_est_patch_dB_re_1N",
+                                  "force_est_rigid_patch_dB_re_1N",
                                   "v2_tread_dB_re_1nm_s",
                                   "v2_contact_dB_re_1nm_s",
                                   "v2_tread_est_dB_re_1nm_s",
@@ -187,6 +196,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
     values[c++] = level_db(budget.force[b], force_reference);
     values[c++] = level_db(budget.force_estimate_point[b], force_reference);
     values[c++] = level_db(budget.force_estimate_patch[b], force_reference);
+    values[c++] = level_db(budget.force_estimate_rigid_patch[b], force_reference);
     values[c++] = level_db(budget.v2_tread[b], velocity_reference);
     values[c++] = level_db(budget.v2_contact[b], velocity_reference);
     values[c++] = level_db(budget.v2_tread_estimate[b], velocity_reference);
@@ -213,7 +223,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
 
   if (plots) {
     // Columns (1-based) of the lines drawn.
-    const std::size_t lp = 17;  // Lp of the first receiver
+    const std::size_t lp = 18;  // Lp of the first receiver
     std::ostringstream gp;
     gp << "# Drawn by rollnoise from budget.csv; run `gnuplot budget.gp` to redraw.\n"
        << "# The energy budget of the run, band by band: each stage (solid) and its independent estimate\n"
@@ -230,21 +240,22 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
        << "     '' skip 1 using 1:5 with linespoints lw 1.5 pt 7 ps 0.5 lc 2 title 'total force (re 1 N)', \\\n"
        << "     '' skip 1 using 1:6 with lines dt 2 lc 2 title 'force est., point texture', \\\n"
        << "     '' skip 1 using 1:7 with lines dt 3 lc 2 title 'force est., patch texture', \\\n"
-       << "     '' skip 1 using 1:8 with linespoints lw 1.5 pt 7 ps 0.5 lc 3 title '<v2> belt (re 1e-9 m/s)', \\\n"
-       << "     '' skip 1 using 1:9 with linespoints lw 1.5 pt 5 ps 0.5 lc 4 title '<v2> within 0.3 m of contact', \\\n"
-       << "     '' skip 1 using 1:10 with lines dt 2 lc 3 title '<v2> belt est. |Y|2 F2', \\\n"
-       << "     '' skip 1 using 1:11 with lines dt 2 lc 4 title '<v2> near est. |Y|2 F2', \\\n"
-       << "     '' skip 1 using 1:12 with lines lw 1 lc 8 title '<v2> radiating (mesh)', \\\n"
-       << "     '' skip 1 using 1:13 with linespoints lw 1.5 pt 7 ps 0.5 lc 6 title 'L_W (re 1 pW)', \\\n";
+       << "     '' skip 1 using 1:8 with lines dt 4 lc 2 title 'force est., rigid patch', \\\n"
+       << "     '' skip 1 using 1:9 with linespoints lw 1.5 pt 7 ps 0.5 lc 3 title '<v2> belt (re 1e-9 m/s)', \\\n"
+       << "     '' skip 1 using 1:10 with linespoints lw 1.5 pt 5 ps 0.5 lc 4 title '<v2> within 0.3 m of contact', \\\n"
+       << "     '' skip 1 using 1:11 with lines dt 2 lc 3 title '<v2> belt est. |Y|2 F2', \\\n"
+       << "     '' skip 1 using 1:12 with lines dt 2 lc 4 title '<v2> near est. |Y|2 F2', \\\n"
+       << "     '' skip 1 using 1:13 with lines lw 1 lc 8 title '<v2> radiating (mesh)', \\\n"
+       << "     '' skip 1 using 1:14 with linespoints lw 1.5 pt 7 ps 0.5 lc 6 title 'L_W (re 1 pW)', \\\n";
     if (!receivers.empty()) {
       gp << "     '' skip 1 using 1:" << lp << " with linespoints lw 1.5 pt 9 ps 0.6 lc 7 title 'L_p " << receivers[0].name
          << "', \\\n"
          << "     '' skip 1 using 1:" << lp + 1 << " with lines dt 2 lc 7 title 'L_p " << receivers[0].name
          << " est. (hemisphere, no horn)', \\\n";
     }
-    gp << "     '' skip 1 using 1:14 axes x1y2 with linespoints lw 2 pt 4 ps 0.6 lc rgb 'black' title 'sigma (right)', \\\n"
-       << "     '' skip 1 using 1:15 axes x1y2 with lines dt 2 lc rgb 'black' title 'sigma piston (right)', \\\n"
-       << "     '' skip 1 using 1:16 axes x1y2 with lines dt 3 lc rgb 'black' title 'sigma cylinder (right)'\n";
+    gp << "     '' skip 1 using 1:15 axes x1y2 with linespoints lw 2 pt 4 ps 0.6 lc rgb 'black' title 'sigma (right)', \\\n"
+       << "     '' skip 1 using 1:16 axes x1y2 with lines dt 2 lc rgb 'black' title 'sigma piston (right)', \\\n"
+       << "     '' skip 1 using 1:17 axes x1y2 with lines dt 3 lc rgb 'black' title 'sigma cylinder (right)'\n";
     write_plot(dir, "budget", gp.str());
   }
   return {{"file", "budget.csv"},
@@ -252,6 +263,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
           {"welch_segment_samples", budget.segment_length},
           {"contact_stiffness_N_per_m", budget.contact_stiffness},
           {"patch_length_m", budget.patch_length},
+          {"patch_width_m", budget.patch_width},
           {"near_contact_m", budget_near_contact_m},
           {"radiating_area_m2", area}};
 }

@@ -38,9 +38,13 @@ struct TyreBudget {
   double sample_rate = 0.0;  // Hz, of the contact steps
   std::size_t segment_length = 0;
   double contact_stiffness = 0.0;  // k_c, N/m, of the estimate
-  double patch_length = 0.0;       // m
+  double patch_length = 0.0;       // m, mean over the run
+  double patch_width = 0.0;        // m, mean over the run
   std::vector<double> texture_centre, texture_patch, force, v2_tread, v2_contact;
-  std::vector<double> force_estimate_point, force_estimate_patch, v2_tread_estimate, v2_contact_estimate;
+  // Force estimates: centre-line texture on the point receptance; patch-mean texture on the point
+  // receptance; patch-mean texture on the patch receptance (a rigid patch).
+  std::vector<double> force_estimate_point, force_estimate_patch, force_estimate_rigid_patch;
+  std::vector<double> v2_tread_estimate, v2_contact_estimate;
 };
 
 // The bands of the budget for contact steps at `sample_rate`: 100 Hz up to the band nearest
