@@ -233,7 +233,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
        << "set output 'budget.png'\nset datafile separator ','\nset grid\nset logscale x\n"
        << "set xlabel 'third-octave band (Hz)'\nset ylabel 'level (dB, references in the key)'\n"
        << "set y2label 'radiation efficiency sigma'\nset logscale y2\nset y2range [1e-3:10]\nset ytics nomirror\n"
-       << "set y2tics\nset yrange [-20:*]\nset key outside right\n"
+       << "set y2tics\nset yrange [-20:*]\nset autoscale xfix\nset key outside right font 'DejaVu Sans,9'\n"
        << "set title 'Energy budget: texture -> force -> belt velocity -> sound power -> microphone'\n"
        << "plot 'budget.csv' skip 1 using 1:3 with linespoints lw 1.5 pt 7 ps 0.5 lc 1 title 'texture, centre line (re 1 um)', \\\n"
        << "     '' skip 1 using 1:4 with lines dt 2 lc 1 title 'texture, patch mean', \\\n"
