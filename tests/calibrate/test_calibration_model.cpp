@@ -20,6 +20,7 @@
 #include "calibrate/sdof_calibration.hpp"
 #include "core/error.hpp"
 #include "greens/kropp_plate.hpp"
+#include "greens/passenger_plate.hpp"
 
 namespace rollnoise {
 namespace {
@@ -28,22 +29,7 @@ constexpr double two_pi = 2.0 * std::numbers::pi;
 
 // The passenger tyre of models/tyres/passenger_205_55R16.toml, with fewer modes where a test
 // needs speed more than convergence.
-PlateParameters passenger_plate(int circumferential_modes = 256, int lateral_modes = 25) {
-  PlateParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.mass_per_area = 12.0;
-  p.tension_x = 6.0e4;
-  p.tension_y = 9.0e3;
-  p.bending_x = 7.0;
-  p.bending_y = 3.0;
-  p.bending_xy = 4.6;
-  p.foundation_stiffness = 3.2e6;
-  p.loss_factor = 0.1;
-  p.circumferential_modes = circumferential_modes;
-  p.lateral_modes = lateral_modes;
-  return p;
-}
+using test::passenger_plate;
 
 // The largest error of `gradient` against central differences of α in each parameter's log,
 // relative to |α|: max_k |p_k·∂α/∂p_k − FD|/|α|. FD extrapolates central differences with

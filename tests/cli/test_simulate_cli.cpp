@@ -225,6 +225,32 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   EXPECT_GE(summary["wav_duration_s"].get<double>(), 5.0);
   EXPECT_TRUE(summary["sound_power"]["LwA_dB"].is_number());
 
+  // The energy budget (issue 10 §1): one row per third-octave band from 100 Hz to the top of the
+  // radiated band (1.25 kHz here), the stages and their estimates, a level per receiver.
+  EXPECT_EQ(first_line(out / "budget.csv"),
+            "band_hz,wavelength_m,texture_centre_dB_re_1um,texture_patch_dB_re_1um,force_dB_re_1N,"
+            "force_est_point_dB_re_1N,force_est_patch_dB_re_1N,force_est_rigid_patch_dB_re_1N,v2_tread_dB_re_1nm_s,v2_contact_dB_re_1nm_s,"
+            "v2_tread_est_dB_re_1nm_s,v2_contact_est_dB_re_1nm_s,v2_radiating_dB_re_1nm_s,Lw_dB_re_1pW,sigma,"
+            "sigma_piston,sigma_cylinder,Lp_cpx_front_dB_re_20uPa,Lp_cpx_front_hemi_est_dB_re_20uPa,"
+            "Lp_cpx_rear_dB_re_20uPa,Lp_cpx_rear_hemi_est_dB_re_20uPa,Lp_spb_dB_re_20uPa,"
+            "Lp_spb_hemi_est_dB_re_20uPa,horn_gain_dB");
+  {
+    std::ifstream in(out / "budget.csv");
+    std::string line;
+    std::vector<std::string> bands;
+    std::getline(in, line);
+    while (std::getline(in, line)) bands.push_back(line.substr(0, line.find(',')));
+    ASSERT_FALSE(bands.empty());
+    EXPECT_EQ(bands.front(), "100");
+    EXPECT_EQ(bands.back(), "1250");
+    EXPECT_EQ(bands.size(), 12u);
+  }
+  EXPECT_EQ(summary["energy_budget"]["file"], "budget.csv");
+  if (gnuplot_installed()) {
+    EXPECT_TRUE(fs::exists(out / "budget.png"));
+  }
+  EXPECT_TRUE(fs::exists(out / "budget.gp"));
+
   const RunResult a = ws.run({"analyse", (out / "cpx_front.wav").string(), "--out", "heard"});
   ASSERT_EQ(a.status, 0) << describe(a);
   const nlohmann::json heard = read_json(ws.path("heard") / "summary.json");

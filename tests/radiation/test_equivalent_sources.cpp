@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/sphere_points.hpp"
 
 namespace rollnoise {
 namespace {
@@ -21,17 +22,7 @@ namespace {
 using Complex = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
 
-// n points spread evenly over the unit sphere (Fibonacci lattice): equal areas 4π/n.
-Eigen::Matrix3Xd fibonacci_sphere(int n) {
-  Eigen::Matrix3Xd p(3, n);
-  const double golden = kPi * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < n; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / static_cast<double>(n);
-    const double r = std::sqrt(1.0 - z * z);
-    p.col(i) << r * std::cos(golden * i), r * std::sin(golden * i), z;
-  }
-  return p;
-}
+using test::fibonacci_sphere;
 
 const Medium kAir{};
 

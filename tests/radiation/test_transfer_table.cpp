@@ -7,21 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "radiation/sphere_points.hpp"
 #include "radiation/transfer_table.hpp"
 
 namespace rollnoise {
 namespace {
 
-Eigen::Matrix3Xd fibonacci_sphere(int n) {
-  Eigen::Matrix3Xd p(3, n);
-  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < n; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / static_cast<double>(n);
-    const double r = std::sqrt(1.0 - z * z);
-    p.col(i) << r * std::cos(golden * i), r * std::sin(golden * i), z;
-  }
-  return p;
-}
+using test::fibonacci_sphere;
 
 TEST(TransferTable, InterpolatesBetweenAnchors) {
   // A sphere of 0.1 m radius, 0.15 m above the road (a stand-in for a tyre's size).

@@ -34,7 +34,7 @@ void plot_spectra(const fs::path& dir, const std::vector<ReceiverSignal>& signal
 }  // namespace
 
 nlohmann::json write_sound_report(const fs::path& dir, const std::vector<ReceiverSignal>& signals,
-                                  const std::string& source, bool plot) {
+                                  const std::string& source, bool plot, std::vector<BandSpectrum>* spectra) {
   std::ofstream csv_file(dir / "spectrum.csv", std::ios::binary);
   csv_file << "receiver,band_hz,Lp_dB,LpA_dB\n";
   nlohmann::json levels = nlohmann::json::object();
@@ -57,6 +57,7 @@ nlohmann::json write_sound_report(const fs::path& dir, const std::vector<Receive
       csv_file << r.name << ',' << spectrum.labels[b] << ',' << format_number(spectrum.lp_db[b]) << ','
                << format_number(spectrum.lpa_db[b]) << '\n';
     }
+    if (spectra) spectra->push_back(spectrum);
     levels[r.name] = {{"Leq_dB", leq_db(p)},
                       {"LAeq_dB", laeq_db(p, r.sample_rate)},
                       {"LAFmax_dB", lafmax_db(p, r.sample_rate)},

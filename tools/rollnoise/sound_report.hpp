@@ -10,6 +10,8 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "acoustics/sound_levels.hpp"
+
 namespace rollnoise {
 
 struct ReceiverSignal {
@@ -24,7 +26,9 @@ struct ReceiverSignal {
 // Writes spectrum.csv and the spectrum plot into `dir` and returns
 // {RECEIVER: {"Leq_dB", "LAeq_dB", "LAFmax_dB", "sample_rate_hz", "duration_s"}}.
 // `source` names the input in messages (InputError when a signal is too short for bands).
+// `spectra` (optional) receives each signal's band spectrum, in the order of `signals`.
 nlohmann::json write_sound_report(const std::filesystem::path& dir, const std::vector<ReceiverSignal>& signals,
-                                  const std::string& source, bool plot = true);
+                                  const std::string& source, bool plot = true,
+                                  std::vector<BandSpectrum>* spectra = nullptr);
 
 }  // namespace rollnoise

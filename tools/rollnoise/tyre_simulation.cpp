@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -25,6 +26,8 @@
 #include "radiation/belt_sampling.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 #include "response/surface_response.hpp"
+#include "acoustics/band_power.hpp"
+#include "energy_budget_output.hpp"
 #include "tyre_sound.hpp"
 
 namespace rollnoise {
@@ -73,9 +76,10 @@ void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, co
 // over one revolution, starting at the top of the tyre (empty if the run is shorter).
 // When `tread_velocity` is given, it receives the belt's velocity sampled onto the radiation
 // mesh's tread points by `sampling` (belt_sampling.hpp), one row per step.
+// When `belt_psd` is given, every step's belt velocity (index j + Ny·g) is pushed into it.
 std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingPlate& plate,
                                  double speed, double load, const Eigen::SparseMatrix<double>* sampling,
-                                 Eigen::MatrixXd* tread_velocity) {
+                                 Eigen::MatrixXd* tread_velocity, PointAveragedPsd* belt_psd) {
   const TyreGrid& grid = plate.grid();
   Hdf5Writer h5(path);
   h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
@@ -135,6 +139,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   if (tread_velocity) tread_velocity->resize(static_cast<Eigen::Index>(samples), sampling->rows());
   for (std::size_t n = 0; n < samples; ++n) {
     response.step(t.force.row(static_cast<Eigen::Index>(n)).transpose(), u, v);
+    if (belt_psd) belt_psd->push(std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
     if (tread_velocity) {
       // The radiating velocity leaves out the cells in contact: the road holds the tread there,
       // and what the tread displaces escapes only through the texture's channels (air pumping,
@@ -295,9 +300,19 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const Eigen::SparseMatrix<double> sampling =
       belt_to_tread_matrix(grid.circumferential, grid.lateral, make_tyre_surface_mesh(sound.radiation.mesh));
   Eigen::MatrixXd tread_velocity;
+  // The energy budget (issue 10 §1) of a run with radiation: the belt's velocity spectra, over
+  // the whole belt and near the contact, gathered while the response stage runs.
+  std::unique_ptr<PointAveragedPsd> belt_psd;
+  const auto samples = static_cast<std::size_t>(trace.time.size());
+  if (sound.enabled && samples >= 8) {
+    belt_psd = std::make_unique<PointAveragedPsd>(
+        static_cast<std::size_t>(grid.circumferential) * static_cast<std::size_t>(grid.lateral), 1.0 / dt,
+        welch_segment_for(samples, budget_max_segment),
+        belt_budget_weights(grid.circumferential, grid.lateral, grid.circumference()));
+  }
   const std::vector<double> revolution =
       write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load,
-                   &sampling, sound.enabled ? &tread_velocity : nullptr);
+                   &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
     write_greens_circumference(staged.staging(), plate, grid.circumferential);
@@ -337,8 +352,21 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"static_load_N", settings.static_load},
                          {"history", to_string(settings.history)}};
   if (sound.enabled) {
+    std::unique_ptr<TyreBudget> budget;
+    if (belt_psd) {
+      // k_c of the single-point estimate: the tread springs over the mean contact area, in
+      // parallel (a nonlinear tread's springs taken as linear; a half-space tread as rigid).
+      const double area = trace.contact_area.mean();
+      const double contact_stiffness =
+          model.tread.type == TreadSettings::Type::winkler     ? model.tread.stiffness_per_area * area
+          : model.tread.type == TreadSettings::Type::nonlinear ? model.tread.spring_stiffness * area
+                                                               : std::numeric_limits<double>::infinity();
+      budget = std::make_unique<TyreBudget>(tyre_budget(trace, grid, plate, *belt_psd, settings.speed, 1.0 / dt,
+                                                        budget_bands(1.0 / dt, sound.radiation.max_frequency_hz),
+                                                        contact_stiffness));
+    }
     const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, tread_velocity, 1.0 / dt, settings.speed,
-                                                  fs::path(file.path()).filename().string(), plots);
+                                                  fs::path(file.path()).filename().string(), plots, budget.get());
     for (const auto& [key, value] : heard.items()) summary[key] = value;
   }
   summary["warnings"] = trace.warnings;
@@ -350,7 +378,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
   std::printf("rollnoise: wrote %s (contact.csv, contact.h5, summary.json%s%s)\n", out.string().c_str(),
-              sound.enabled ? (sound.wav ? ", spectrum.csv, sound_power.csv, WAV files" : ", spectrum.csv, sound_power.csv")
+              sound.enabled ? (sound.wav ? ", spectrum.csv, sound_power.csv, budget.csv, WAV files"
+                                          : ", spectrum.csv, sound_power.csv, budget.csv")
                             : "",
               plots ? " and plots" : "");
   return 0;

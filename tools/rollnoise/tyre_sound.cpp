@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "acoustics/band_power.hpp"
 #include "acoustics/fractional_octave_bands.hpp"
 #include "acoustics/frequency_weighting.hpp"
 #include "audio/pass_by.hpp"
@@ -16,6 +17,7 @@
 #include "core/csv.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
+#include "energy_budget_output.hpp"
 #include "sound_report.hpp"
 
 namespace rollnoise {
@@ -29,10 +31,13 @@ nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound
   std::ofstream out(dir / "sound_power.csv", std::ios::binary);
   CsvWriter csv(out, {"band_hz", "Lw_dB", "LwA_dB"});
   double total = 0.0, total_a = 0.0;
-  for (const FractionalOctaveBand& band : bands) {
-    double power = 0.0;
-    for (Eigen::Index k = 0; k < sound.frequency_hz.size(); ++k)
-      if (sound.frequency_hz(k) >= band.lower && sound.frequency_hz(k) < band.upper) power += sound.sound_power_w(k);
+  const std::vector<double> powers =
+      band_sums(std::span<const double>(sound.frequency_hz.data(), static_cast<std::size_t>(sound.frequency_hz.size())),
+                std::span<const double>(sound.sound_power_w.data(), static_cast<std::size_t>(sound.sound_power_w.size())),
+                bands);
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    const FractionalOctaveBand& band = bands[b];
+    const double power = powers[b];
     const double a = weighting_db(FrequencyWeighting::A, band.exact);
     const double lw = 10.0 * std::log10(std::max(power, 1e-30) / 1e-12);
     total += power;
@@ -96,7 +101,7 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots) {
+                                const std::string& source, bool plots, const TyreBudget* budget) {
   const auto started = std::chrono::steady_clock::now();
   Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
   for (std::size_t r = 0; r < settings.receivers.size(); ++r)
@@ -133,8 +138,14 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
                        settings.audio_rate, highest_band});
   }
   nlohmann::json result;
-  result["levels"] = write_sound_report(dir, signals, source, plots);
+  std::vector<BandSpectrum> spectra;
+  result["levels"] = write_sound_report(dir, signals, source, plots, &spectra);
   result["sound_power"] = write_sound_power(dir, sound, highest_band, plots);
+  if (budget) {
+    result["energy_budget"] = write_energy_budget(dir, *budget, sound, tread_velocity, radiation.mesh(),
+                                                  settings.radiation.mesh.radius, settings.radiation.medium,
+                                                  settings.receivers, spectra, plots);
+  }
 
   double peak = 0.0;
   for (const ReceiverSignal& s : signals) peak = std::max(peak, s.pressure.cwiseAbs().maxCoeff());

@@ -15,6 +15,7 @@
 namespace rollnoise {
 
 class ConfigTable;
+struct TyreBudget;
 
 struct TyreSoundSettings {
   bool enabled = true;
@@ -34,9 +35,11 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
 // Writes spectrum.csv, sound_power.csv, <receiver>.wav (and spb_passby.wav with an spb
 // receiver) and their plots into `dir`; returns the summary entries ("levels", "full_scale_pa",
 // "sound_power", "radiation"). tread_velocity: samples × tread points of the radiation mesh
-// (outward normal velocity, m/s) at `sample_rate`; speed in m/s.
+// (outward normal velocity, m/s) at `sample_rate`; speed in m/s. With a `budget` (the contact and
+// response lines of the run), also budget.csv and its plot (energy_budget_output.hpp) and the
+// summary entry "energy_budget".
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots);
+                                const std::string& source, bool plots, const TyreBudget* budget = nullptr);
 
 }  // namespace rollnoise

@@ -1,0 +1,115 @@
+#include "acoustics/band_power.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace rollnoise {
+
+std::size_t welch_segment_for(std::size_t samples, std::size_t max_segment) {
+  if (samples < 8) throw InputError("", "samples", "a record of " + std::to_string(samples) + " samples is shorter than 8");
+  std::size_t n = 8;
+  while (2 * n <= samples && 2 * n <= std::max<std::size_t>(max_segment, 8)) n *= 2;
+  return n;
+}
+
+std::vector<double> fluctuation_band_mean_squares(std::span<const double> signal, double sample_rate,
+                                                  const std::vector<FractionalOctaveBand>& bands,
+                                                  std::size_t segment_length) {
+  const double mean =
+      signal.empty() ? 0.0 : std::accumulate(signal.begin(), signal.end(), 0.0) / static_cast<double>(signal.size());
+  std::vector<double> fluctuation(signal.begin(), signal.end());
+  for (double& x : fluctuation) x -= mean;
+  return band_mean_squares_from_psd(welch_psd(fluctuation, sample_rate, segment_length), bands);
+}
+
+std::vector<double> band_sums(std::span<const double> frequency, std::span<const double> value,
+                              const std::vector<FractionalOctaveBand>& bands) {
+  if (frequency.size() != value.size()) throw std::invalid_argument("band_sums: frequency and value differ in length");
+  std::vector<double> sums(bands.size(), 0.0);
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    for (std::size_t k = 0; k < frequency.size(); ++k)
+      if (frequency[k] >= bands[b].lower && frequency[k] < bands[b].upper) sums[b] += value[k];
+  return sums;
+}
+
+std::vector<double> band_means_of(const std::vector<FractionalOctaveBand>& bands,
+                                  const std::function<double(double)>& of_frequency, int points) {
+  if (points < 1) throw std::invalid_argument("band_means_of: points must be >= 1");
+  std::vector<double> means;
+  means.reserve(bands.size());
+  for (const FractionalOctaveBand& band : bands) {
+    double sum = 0.0;
+    for (int i = 0; i < points; ++i) sum += of_frequency(band.lower + (i + 0.5) * (band.upper - band.lower) / points);
+    means.push_back(sum / points);
+  }
+  return means;
+}
+
+double level_db(double mean_square, double reference) {
+  if (!(mean_square > 0.0)) return -std::numeric_limits<double>::infinity();
+  return 10.0 * std::log10(mean_square / (reference * reference));
+}
+
+PointAveragedPsd::PointAveragedPsd(std::size_t points, double sample_rate, std::size_t segment_length,
+                                   std::vector<std::vector<double>> weights)
+    : points_(points), sample_rate_(sample_rate), length_(segment_length), weights_(std::move(weights)) {
+  if (points_ == 0) throw std::invalid_argument("PointAveragedPsd: no points");
+  if (length_ < 8 || length_ % 2 != 0) throw std::invalid_argument("PointAveragedPsd: segment length must be even and >= 8");
+  for (std::vector<double>& w : weights_) {
+    if (w.size() != points_) throw std::invalid_argument("PointAveragedPsd: one weight per point");
+    const double total = std::accumulate(w.begin(), w.end(), 0.0);
+    if (!(total > 0.0) || std::any_of(w.begin(), w.end(), [](double x) { return !(x >= 0.0); }))
+      throw std::invalid_argument("PointAveragedPsd: weights must be >= 0 with a positive sum");
+    for (double& x : w) x /= total;
+  }
+  buffer_.assign(points_ * length_, 0.0f);
+  sums_.assign(weights_.size(), std::vector<double>(length_ / 2 + 1, 0.0));
+}
+
+void PointAveragedPsd::push(std::span<const double> sample) {
+  if (sample.size() != points_) throw std::invalid_argument("PointAveragedPsd: one value per point");
+  for (std::size_t p = 0; p < points_; ++p) buffer_[p * length_ + fill_] = static_cast<float>(sample[p]);
+  if (++fill_ < length_) return;
+  // A full segment: each point's periodogram (welch_psd of exactly one segment), weighted.
+  std::vector<double> segment(length_);
+  for (std::size_t p = 0; p < points_; ++p) {
+    bool used = false;
+    for (const std::vector<double>& w : weights_) used = used || w[p] > 0.0;
+    if (!used) continue;
+    std::copy(buffer_.begin() + static_cast<std::ptrdiff_t>(p * length_),
+              buffer_.begin() + static_cast<std::ptrdiff_t>((p + 1) * length_), segment.begin());
+    const PowerSpectralDensity psd = welch_psd(segment, sample_rate_, length_);
+    for (std::size_t a = 0; a < weights_.size(); ++a) {
+      const double w = weights_[a][p];
+      if (w == 0.0) continue;
+      for (std::size_t k = 0; k < psd.density.size(); ++k) sums_[a][k] += w * psd.density[k];
+    }
+  }
+  ++segments_;
+  // The next segment starts half a segment later: keep the second half.
+  const std::size_t half = length_ / 2;
+  for (std::size_t p = 0; p < points_; ++p) {
+    float* s = buffer_.data() + p * length_;
+    std::copy(s + half, s + length_, s);
+  }
+  fill_ = half;
+}
+
+PowerSpectralDensity PointAveragedPsd::average(std::size_t a) const {
+  if (segments_ == 0) throw InputError("", "samples", "fewer samples than one Welch segment of " + std::to_string(length_));
+  PowerSpectralDensity psd;
+  psd.sample_rate = sample_rate_;
+  psd.segment_length = length_;
+  psd.segments = segments_;
+  psd.density = sums_.at(a);
+  for (double& d : psd.density) d /= static_cast<double>(segments_);
+  return psd;
+}
+
+}  // namespace rollnoise
