@@ -132,9 +132,18 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
   const fs::path file_path = resolve_referenced_file(named, path_);
   std::error_code ec;
   if (!fs::exists(file_path, ec)) {
-    // List what there is: in the library folder (models/surfaces, found like the file), or else
-    // in the folder the path points into.
-    fs::path folder = resolve_referenced_file(library_folder, path_);
+    // List what there is: in the library folder nearest the case file (models/surfaces in its
+    // folder or one above it), else the one found like any referenced file, else the folder
+    // the path points into.
+    fs::path folder;
+    for (fs::path dir = path_.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+      if (fs::is_directory(dir / library_folder, ec)) {
+        folder = dir / library_folder;
+        break;
+      }
+      if (dir == dir.parent_path()) break;
+    }
+    if (folder.empty()) folder = resolve_referenced_file(library_folder, path_);
     if (!fs::is_directory(folder, ec)) folder = file_path.parent_path();
     const std::vector<std::string> available = toml_files_in(folder);
     std::string problem = "no " + kind + " file \"" + named + "\": file not found (tried " + file_path.string() + ")";
