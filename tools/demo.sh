@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The main job: set up, build, and run the demo cases in out/demo/: the paper's §4 validation
 # cases (an SDOF and two coupled SDOFs on a sine and a random road) with their figures, and the
-# 205/55 R16 tyre rolling on a smooth road, a rough road and over a cleat. The rough-road and
-# cleat runs radiate to the CPX and SPB microphones: spectrum.csv, LAeq in summary.json,
-# <receiver>.wav (and spb_passby.wav) and spectrum.png.
+# 205/55 R16 tyre rolling on a smooth road, a dense asphalt concrete (models/surfaces/dac11)
+# and over a cleat. The dense-asphalt and cleat runs radiate to the CPX and SPB microphones:
+# spectrum.csv, LAeq in summary.json, <receiver>.wav (and spb_passby.wav), spectrum.png and the
+# energy budget (budget.csv).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
@@ -14,6 +15,11 @@ for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
   name=$(basename "$case" .toml)
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
+
+# Road surfaces (issue 9): the dense asphalt the rough case rolls on, and a measured chip-seal
+# laser profile, each analysed as a road engineer would (MPD, texture spectrum).
+build/tools/rollnoise/rollnoise road models/surfaces/dac11.toml --out "$out/road_dac11"
+build/tools/rollnoise/rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat --out "$out/road_captif"
 
 # Calibration (issue 5): the tyre model fitted to the synthetic example mobilities in
 # data/mobility, giving a model file any tyre case can roll with (--set tyre.file=...).
