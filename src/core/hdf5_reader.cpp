@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/hdf5_handle.hpp"
 
 namespace rollnoise {
 namespace {
@@ -15,22 +16,7 @@ namespace {
 constexpr std::string_view signature{"\x89HDF\r\n\x1a\n", 8};
 constexpr std::size_t max_attribute_bytes = 4096;
 
-// Closes an HDF5 identifier with its own close function when it goes out of scope.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const noexcept { return id_; }
-  bool valid() const noexcept { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using Handle = Hdf5Handle;
 
 // HDF5 prints its error stack to stderr by default; errors here become InputErrors instead.
 void silence_hdf5_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }

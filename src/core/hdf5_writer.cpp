@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "core/hdf5_handle.hpp"
+
 namespace rollnoise {
 namespace {
 
@@ -16,21 +18,7 @@ hid_t checked(hid_t id, const std::string& what) {
   return id;
 }
 
-// Closes an HDF5 identifier with its own close function when it goes out of scope.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const noexcept { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using Handle = Hdf5Handle;
 
 Handle link_creation_with_parents() {
   Handle list(checked(H5Pcreate(H5P_LINK_CREATE), "property list"), H5Pclose);

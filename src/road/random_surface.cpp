@@ -1,5 +1,7 @@
 #include "road/random_surface.hpp"
 
+#include "road/sampled_road.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <new>
@@ -20,10 +22,6 @@ namespace {
 [[noreturn]] void throw_bad(const char* key, const std::string& problem) {
   throw InputError("", key, problem);  // the factory names the file and the section
 }
-
-// Points within this fraction of a sample spacing outside the grid are taken as on its edge, so
-// that rounding in x / spacing does not reject the grid's own end points.
-constexpr double edge_slack = 1e-9;
 
 }  // namespace
 
@@ -141,24 +139,7 @@ RandomSurface::RandomSurface(const RandomSurfaceSpec& spec) {
 std::string RandomSurface::type() const { return "random_surface"; }
 
 double RandomSurface::height(double x, double y) const {
-  if (x < 0.0) return 0.0;  // lead-in convention (road_profile.hpp)
-  const auto last_x = static_cast<double>(x_count_ - 1);
-  const auto last_y = static_cast<double>(y_count_ - 1);
-  const double t = x / spacing_;
-  const double u = y / spacing_ + 0.5 * last_y;
-  if (!(t <= last_x + edge_slack) || !(u >= -edge_slack && u <= last_y + edge_slack)) {  // also NaN
-    throw std::logic_error("RandomSurface::height: (x, y) = (" + format_number(x) + ", " +
-                           format_number(y) + ") m is outside the generated surface, x in [0, " +
-                           format_number(end_x()) + "], |y| <= " + format_number(half_extent_y()));
-  }
-  const std::size_t i = std::min(static_cast<std::size_t>(std::max(t, 0.0)), x_count_ - 2);
-  const std::size_t j = std::min(static_cast<std::size_t>(std::max(u, 0.0)), y_count_ - 2);
-  const double fx = std::clamp(t - static_cast<double>(i), 0.0, 1.0);
-  const double fy = std::clamp(u - static_cast<double>(j), 0.0, 1.0);
-  const double* row0 = data_.get() + i * stride_ + j;
-  const double* row1 = row0 + stride_;
-  // Exact at the grid points (weights 1 and 0).
-  return (1.0 - fx) * ((1.0 - fy) * row0[0] + fy * row0[1]) + fx * ((1.0 - fy) * row1[0] + fy * row1[1]);
+  return grid_height(data_.get(), stride_, x_count_, y_count_, spacing_, x, y, "random_surface");
 }
 
 }  // namespace rollnoise

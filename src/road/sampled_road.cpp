@@ -46,24 +46,30 @@ SampledSurface::SampledSurface(std::string type, double spacing, std::size_t x_c
   }
 }
 
-double SampledSurface::height(double x, double y) const {
+double grid_height(const double* samples, std::size_t stride, std::size_t x_count, std::size_t y_count,
+                   double spacing, double x, double y, const std::string& type) {
   if (x < 0.0) return 0.0;  // lead-in convention (road_profile.hpp)
-  const auto last_x = static_cast<double>(x_count_ - 1);
-  const auto last_y = static_cast<double>(y_count_ - 1);
-  const double t = x / spacing_;
-  const double u = y / spacing_ + 0.5 * last_y;
+  const auto last_x = static_cast<double>(x_count - 1);
+  const auto last_y = static_cast<double>(y_count - 1);
+  const double t = x / spacing;
+  const double u = y / spacing + 0.5 * last_y;
   if (!(t <= last_x + edge_slack) || !(u >= -edge_slack && u <= last_y + edge_slack)) {  // also NaN
-    throw std::logic_error(type_ + " road: (x, y) = (" + format_number(x) + ", " + format_number(y) +
-                           ") m is outside the generated surface, x in [0, " + format_number(end_x()) +
-                           "], |y| <= " + format_number(half_extent_y()));
+    throw std::logic_error(type + " road: (x, y) = (" + format_number(x) + ", " + format_number(y) +
+                           ") m is outside the generated surface, x in [0, " + format_number(spacing * last_x) +
+                           "], |y| <= " + format_number(spacing * static_cast<double>((y_count - 1) / 2)));
   }
-  const std::size_t i = std::min(static_cast<std::size_t>(std::max(t, 0.0)), x_count_ - 2);
-  const std::size_t j = std::min(static_cast<std::size_t>(std::max(u, 0.0)), y_count_ - 2);
+  const std::size_t i = std::min(static_cast<std::size_t>(std::max(t, 0.0)), x_count - 2);
+  const std::size_t j = std::min(static_cast<std::size_t>(std::max(u, 0.0)), y_count - 2);
   const double fx = std::clamp(t - static_cast<double>(i), 0.0, 1.0);
   const double fy = std::clamp(u - static_cast<double>(j), 0.0, 1.0);
-  const double* row0 = samples_.data() + i * y_count_ + j;
-  const double* row1 = row0 + y_count_;
+  const double* row0 = samples + i * stride + j;
+  const double* row1 = row0 + stride;
+  // Exact at the grid points (weights 1 and 0).
   return (1.0 - fx) * ((1.0 - fy) * row0[0] + fy * row0[1]) + fx * ((1.0 - fy) * row1[0] + fy * row1[1]);
+}
+
+double SampledSurface::height(double x, double y) const {
+  return grid_height(samples_.data(), y_count_, x_count_, y_count_, spacing_, x, y, type_);
 }
 
 std::vector<double> SampledSurface::row(std::size_t i) const {

@@ -33,6 +33,12 @@ class SampledProfile final : public RoadProfile {
 // r(x, y) from samples at x = i·spacing (i = 0 .. x_count-1) and y = (j - (y_count-1)/2)·spacing
 // (j = 0 .. y_count-1, y_count odd, so y = 0 is a grid line), stored row-major in x:
 // samples[i·y_count + j].
+// Bilinear interpolation on such a grid, with rows `stride` apart (stride >= y_count), for every
+// surface stored this way (SampledSurface, RandomSurface). r = 0 for x < 0; a point outside the
+// grid (beyond rounding) is a std::logic_error naming `type`.
+double grid_height(const double* samples, std::size_t stride, std::size_t x_count, std::size_t y_count,
+                   double spacing, double x, double y, const std::string& type);
+
 class SampledSurface final : public RoadSurface {
  public:
   SampledSurface(std::string type, double spacing, std::size_t x_count, std::size_t y_count,
