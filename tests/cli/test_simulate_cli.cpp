@@ -171,6 +171,29 @@ TEST(SimulateCli, SdofSineWritesContactCsvSummaryAndPlotScript) {
       << "only the case and the output folder";
 }
 
+TEST(SimulateCli, GeneratedRoadReachesTheLastStepOfARunThatRoundsUp) {
+  // The run samples t = n·dt up to n = round(duration/dt), up to half a step past the duration.
+  // A generated road made exactly as long as the run needs (length shorter than the run) must
+  // reach that last sample: 100 km/h once failed 1.1 mm short of the end of an aggregate map.
+  // dt = (2π·0.316 m / 512) / V; the duration is 20.51 steps, so the run takes 21.
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  const double speed = 27.7778;
+  const double dt = 2.0 * M_PI * 0.316 / 512.0 / speed;
+  ws.write("tyre.toml", edit_case(project_case("plate_rough_80kmh.toml"),
+                                  {{"tyre", "file", "\"" + model + "\""},
+                                   {"road", "surface", std::nullopt},
+                                   {"road", "type", "\"aggregate\""},
+                                   {"road", "max_chip_size", "0.011"},
+                                   {"road", "length", "0.01"},
+                                   {"rolling", "speed", std::to_string(speed)},
+                                   {"rolling", "duration", std::to_string(20.51 * dt)},
+                                   {"radiation", "enabled", "false"}}));
+  const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_EQ(read_json(ws.path("tyre") / "summary.json")["settings"]["steps"].get<long>(), 21);
+}
+
 TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
   Workspace ws;
   const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
