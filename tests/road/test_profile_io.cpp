@@ -232,6 +232,27 @@ TEST_F(ProfileIo, LoadProfileFileResamplesUnevenXLinearly) {
   EXPECT_EQ(u.y, std::vector<double>{0.0});
 }
 
+TEST_F(ProfileIo, SteepStoneEdgesSurviveACsvRoundTrip) {
+  // Stone edges sampled at the laser's 0.0375 mm, written in mm and read back as a file road:
+  // each rises 1.2 mm over 4 samples (slope 8) and falls over 36. The spike criterion is judged
+  // at 0.5 mm (profile_cleaning.hpp), where these steps are texture: nothing is replaced. A
+  // single reading 4 mm too high is still a spike (it and both neighbours).
+  const double dx = 0.0375e-3;
+  const auto x = grid(0.0, dx, 8000);  // 300 mm
+  std::vector<double> z(x.size());
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    const std::size_t k = i % 40;
+    z[i] = k < 4 ? 0.3e-3 * static_cast<double>(k) : 1.2e-3 * (1.0 - static_cast<double>(k - 4) / 36.0);
+  }
+  const FileRoad road(write("edges_mm.csv", csv_of(x, {z}, "x_mm,z_mm", 1e-3)), 0.0, x.back());
+  EXPECT_EQ(road.spikes(), 0u);
+  EXPECT_EQ(road.dropouts(), 0u);
+  for (std::size_t i = 0; i < x.size(); i += 7) EXPECT_NEAR(road.height(x[i]), z[i], 1e-12) << i;
+  z[4010] += 4e-3;
+  const FileRoad spiked(write("spiked_mm.csv", csv_of(x, {z}, "x_mm,z_mm", 1e-3)), 0.0, x.back());
+  EXPECT_EQ(spiked.spikes(), 3u);
+}
+
 TEST_F(ProfileIo, FileRoadInterpolatesLinearlyAndRejectsAShortProfile) {
   const auto x = grid(0.0, 1e-3, 1001);  // 0 .. 1 m, in mm
   std::vector<double> z(x.size());
