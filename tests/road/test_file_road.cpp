@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "road/file_road.hpp"
+#include "road/profile_cleaning.hpp"
 
 namespace rollnoise {
 namespace {
@@ -65,7 +66,8 @@ TEST_F(FileRoadTest, LinearDataIsInterpolatedExactly) {
 
 TEST_F(FileRoadTest, PiecewiseLinearBetweenRowsAndZeroBeforeStart) {
   const auto path = write("tent.csv", "x,z\n-1,5\n0,0\n1,1\n2,0\n");
-  // Steps of 1 to 5 m per metre are spikes to ISO 13473-1 (|dz| >= 3 dx at -1..0): kept here.
+  // Steps of 1 to 5 m per metre, spikes to ISO 13473-1 if α (spike_slope_threshold) is at most
+  // their slope: kept here whatever α is, as the test is about the interpolation.
   const FileRoad road(path, -1.0, 2.0, SpikeHandling::keep);
   EXPECT_EQ(road.height(-0.5), 0.0);  // data at x < 0 is replaced by the flat lead-in
   EXPECT_EQ(road.height(0.5), 0.5);
@@ -75,14 +77,17 @@ TEST_F(FileRoadTest, PiecewiseLinearBetweenRowsAndZeroBeforeStart) {
 }
 
 TEST_F(FileRoadTest, SpikesAreRemovedUnlessKept) {
-  // A 5 mm spike on a flat 1 mm-spaced profile: both samples next to each step are spikes.
-  const auto path = write("spike.csv", "x_mm,z_mm\n0,0\n1,0\n2,0\n3,5\n4,0\n5,0\n6,0\n");
+  // A spike twice the threshold (2 α mm over 1 mm) on a flat 1 mm-spaced profile: the sample
+  // and both next to it (the ends of each step) are spikes.
+  const double spike_mm = 2 * spike_slope_threshold;
+  const auto path = write("spike.csv", "x_mm,z_mm\n0,0\n1,0\n2,0\n3," + std::to_string(spike_mm) +
+                                           "\n4,0\n5,0\n6,0\n");
   const FileRoad cleaned(path, 0.0, 0.006);
-  EXPECT_GT(cleaned.spikes(), 0u);
+  EXPECT_EQ(cleaned.spikes(), 3u);
   for (int i = 0; i <= 6; ++i) EXPECT_EQ(cleaned.height(1e-3 * i), 0.0) << i;
   const FileRoad kept(path, 0.0, 0.006, SpikeHandling::keep);
   EXPECT_EQ(kept.spikes(), 0u);
-  EXPECT_NEAR(kept.height(3e-3), 5e-3, 1e-18);
+  EXPECT_NEAR(kept.height(3e-3), spike_mm * 1e-3, 1e-17);
 }
 
 TEST_F(FileRoadTest, CrlfAndExtraColumnsAreAccepted) {
