@@ -10,9 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -21,59 +19,43 @@
 #include "calibrate/frf_uff_reader.hpp"
 #include "calibrate/uff_frf_writer.hpp"
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 
 namespace rollnoise {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using fuzz::Outcome;
+using fuzz::read_bytes;
 
 std::vector<std::string> files_in(const fs::path& dir, bool ok_only) {
-  std::vector<fs::path> paths;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && (!ok_only || entry.path().filename().string().rfind("ok_", 0) == 0))
-      paths.push_back(entry.path());
-  std::sort(paths.begin(), paths.end());
   std::vector<std::string> out;
-  for (const auto& p : paths) out.push_back(read_bytes(p));
+  for (const auto& p : fuzz::sorted_files(dir))
+    if (!ok_only || p.filename().string().rfind("ok_", 0) == 0) out.push_back(read_bytes(p));
   return out;
 }
-
-enum class Outcome { parsed, input_error, other };
 
 // Runs a reader and checks what it returns; `problem` describes any violation.
 Outcome run_checked(const std::function<FrfFile(const std::string&)>& read, const std::string& bytes,
                     std::string& problem) {
-  const std::string source = "fuzz-source";
-  try {
+  return fuzz::classify("fuzz-source", [&] {
     const FrfFile file = read(bytes);
-    if (file.frfs.empty()) problem = "no FRF and no error";
+    std::string violation;
+    if (file.frfs.empty()) violation = "no FRF and no error";
     for (const MeasuredFrf& f : file.frfs) {
-      if (f.size() == 0 || f.mobility.size() != f.size()) problem = "sizes disagree";
+      if (f.size() == 0 || f.mobility.size() != f.size()) violation = "sizes disagree";
       for (Eigen::Index k = 0; k < f.size(); ++k) {
-        if (!(f.frequency_hz[k] > 0.0) || !std::isfinite(f.frequency_hz[k])) problem = "a frequency <= 0 or not finite";
-        if (k > 0 && !(f.frequency_hz[k] > f.frequency_hz[k - 1])) problem = "frequencies do not increase";
+        if (!(f.frequency_hz[k] > 0.0) || !std::isfinite(f.frequency_hz[k])) violation = "a frequency <= 0 or not finite";
+        if (k > 0 && !(f.frequency_hz[k] > f.frequency_hz[k - 1])) violation = "frequencies do not increase";
         if (!std::isfinite(f.mobility[k].real()) || !std::isfinite(f.mobility[k].imag()) || f.mobility[k] == 0.0)
-          problem = "a mobility that is 0 or not finite";
+          violation = "a mobility that is 0 or not finite";
       }
       if (f.response && (!std::isfinite(f.response->x) || !std::isfinite(f.response->y)))
-        problem = "a position that is not finite";
+        violation = "a position that is not finite";
     }
-    return Outcome::parsed;
-  } catch (const InputError& e) {
-    if (std::string(e.what()).rfind(source, 0) != 0) problem = std::string("message without the source: ") + e.what();
-    return Outcome::input_error;
-  } catch (const std::exception& e) {
-    problem = std::string("unexpected exception: ") + e.what();
-    return Outcome::other;
-  } catch (...) {
-    problem = "unexpected non-standard exception";
-    return Outcome::other;
-  }
+    return violation;
+  }, problem);
 }
 
 std::string mutate(std::string s, std::mt19937_64& rng, const std::vector<std::string>& tokens) {
@@ -130,7 +112,7 @@ void fuzz(const char* name, const std::function<FrfFile(const std::string&)>& re
     ++count.inputs;
     std::string problem;
     const Outcome outcome = run_checked(read, bytes, problem);
-    (outcome == Outcome::parsed ? count.parsed : count.rejected) += 1;
+    (outcome == Outcome::accepted ? count.parsed : count.rejected) += 1;
     if (!problem.empty() && count.failures++ < 10) {
       std::string shown;
       for (char c : bytes.substr(0, 300)) shown += (c >= 32 && c < 127) || c == '\n' ? c : '?';
@@ -139,8 +121,7 @@ void fuzz(const char* name, const std::function<FrfFile(const std::string&)>& re
   };
   for (const std::string& seed : seeds) check(seed);
   for (int i = 0; i < 1000; ++i) {
-    std::string bytes(rng() % 400, '\0');
-    for (auto& c : bytes) c = static_cast<char>(rng() & 0xFFU);
+    std::string bytes = fuzz::random_text(rng, "", 399);
     if (i % 2 == 1) bytes = random_prefix + bytes;
     check(bytes);
   }

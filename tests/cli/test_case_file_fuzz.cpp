@@ -26,6 +26,7 @@
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 #include "greens/greens_model.hpp"
 #include "greens/model_factory.hpp"
 #include "greens/plate_factory.hpp"
@@ -33,12 +34,7 @@
 namespace {
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using rollnoise::fuzz::read_bytes;
 
 // Printable preview of an input for failure messages.
 std::string escaped(const std::string& bytes, std::size_t limit = 400) {

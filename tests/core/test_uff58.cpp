@@ -12,9 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <numbers>
 #include <random>
@@ -23,6 +21,7 @@
 
 #include "core/error.hpp"
 #include "core/uff58.hpp"
+#include "fuzz_support.hpp"
 
 namespace rollnoise {
 namespace {
@@ -32,10 +31,7 @@ namespace fs = std::filesystem;
 const fs::path real_dir{ROLLNOISE_SOURCE_DIR "/../shared/data/uff"};
 const fs::path corpus_dir{ROLLNOISE_UFF_CORPUS_DIR};
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using fuzz::read_bytes;
 
 fs::path real_file(const char* name) { return real_dir / name; }
 
@@ -365,46 +361,31 @@ TEST(Uff58Layouts, MessagesNameFileDatasetAndLine) {
 // ------------------------------------------------------------------------------------------
 // Fuzz
 
-enum class Outcome { parsed, input_error, other };
+using fuzz::Outcome;
 
 // Parses and checks the result's invariants; `problem` describes any violation.
 Outcome parse_checked(const std::string& bytes, std::string& problem) {
   const std::string source = "fuzz-source";
-  try {
+  return fuzz::classify(source, [&] {
     std::vector<int> skipped;
     const auto records = parse_uff58(bytes, source, &skipped);
+    std::string violation;
     for (const auto& r : records) {
       const auto n = static_cast<Eigen::Index>(r.points);
-      if (r.points == 0) problem = "a record without points";
-      if (r.abscissa.size() != n) problem = "abscissa length differs from the point count";
-      if (r.is_complex() != (r.complex_ordinate.size() == n)) problem = "complex ordinate size";
-      if (r.is_complex() == (r.ordinate.size() == n)) problem = "real ordinate size";
+      if (r.points == 0) violation = "a record without points";
+      if (r.abscissa.size() != n) violation = "abscissa length differs from the point count";
+      if (r.is_complex() != (r.complex_ordinate.size() == n)) violation = "complex ordinate size";
+      if (r.is_complex() == (r.ordinate.size() == n)) violation = "real ordinate size";
       if (!r.abscissa.allFinite() || !r.ordinate.allFinite() ||
           !r.complex_ordinate.real().allFinite() || !r.complex_ordinate.imag().allFinite())
-        problem = "a non-finite value was accepted";
-      if (r.points > bytes.size()) problem = "more points than bytes";
+        violation = "a non-finite value was accepted";
+      if (r.points > bytes.size()) violation = "more points than bytes";
     }
-    return Outcome::parsed;
-  } catch (const InputError& e) {
-    if (std::string(e.what()).rfind(source, 0) != 0)
-      problem = std::string("message without the source: ") + e.what();
-    return Outcome::input_error;
-  } catch (const std::exception& e) {
-    problem = std::string("unexpected exception: ") + e.what();
-    return Outcome::other;
-  } catch (...) {
-    problem = "unexpected non-standard exception";
-    return Outcome::other;
-  }
+    return violation;
+  }, problem);
 }
 
-std::vector<fs::path> corpus_files() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(corpus_dir))
-    if (entry.is_regular_file()) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<fs::path> corpus_files() { return fuzz::sorted_files(corpus_dir); }
 
 TEST(Uff58Fuzz, CorpusOkParsesBadIsInputError) {
   const auto files = corpus_files();
@@ -415,7 +396,7 @@ TEST(Uff58Fuzz, CorpusOkParsesBadIsInputError) {
     const Outcome outcome = parse_checked(read_bytes(file), problem);
     EXPECT_TRUE(problem.empty()) << name << ": " << problem;
     if (name.rfind("ok_", 0) == 0) {
-      EXPECT_EQ(outcome, Outcome::parsed) << name << ": " << problem;
+      EXPECT_EQ(outcome, Outcome::accepted) << name << ": " << problem;
     }
     if (name.rfind("bad_", 0) == 0) {
       EXPECT_EQ(outcome, Outcome::input_error) << name;
@@ -553,21 +534,12 @@ TEST(Uff58Fuzz, RandomBytesAndMutationsReturnOrThrowInputError) {
     ++inputs;
     std::string problem;
     const Outcome outcome = parse_checked(bytes, problem);
-    (outcome == Outcome::parsed ? parsed : rejected) += 1;
-    if (!problem.empty() && failures++ < 10) {
-      std::string hex;
-      char buffer[4];
-      for (std::size_t i = 0; i < std::min<std::size_t>(bytes.size(), 200); ++i) {
-        std::snprintf(buffer, sizeof buffer, "%02x ", static_cast<unsigned char>(bytes[i]));
-        hex += buffer;
-      }
-      ADD_FAILURE() << problem << "\n  input: " << hex;
-    }
+    (outcome == Outcome::accepted ? parsed : rejected) += 1;
+    if (!problem.empty() && failures++ < 10) ADD_FAILURE() << problem << "\n  input: " << fuzz::hex_dump(bytes, 200);
   };
   // Random bytes, plain and UFF-flavoured.
   for (int i = 0; i < 2000; ++i) {
-    std::string bytes(rng() % 600, '\0');
-    for (auto& c : bytes) c = static_cast<char>(rng() & 0xFFU);
+    std::string bytes = fuzz::random_text(rng, "", 599);
     if (i % 2 == 1) bytes = "    -1\n    58" + std::string(i % 4 == 1 ? "b" : "") + "\n" + bytes;
     check(bytes);
   }

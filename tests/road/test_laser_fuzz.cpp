@@ -9,15 +9,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 #include "road/laser_profile.hpp"
 
 namespace rollnoise {
@@ -25,100 +23,51 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string hex_dump(const std::string& bytes) {
-  std::string out;
-  char buffer[4];
-  for (std::size_t i = 0; i < std::min<std::size_t>(bytes.size(), 300); ++i) {
-    std::snprintf(buffer, sizeof buffer, "%02x ", static_cast<unsigned char>(bytes[i]));
-    out += buffer;
-  }
-  return out;
-}
-
-enum class Outcome { parsed, input_error, other };
+using fuzz::Outcome;
+using fuzz::read_bytes;
 
 // Parses `text`; a parsed profile must be consistent (finite heights, at least 2 of them, a
 // finite spacing > 0, counts within the points, no more rows than the text has lines).
 Outcome parse_checked(const std::string& text, std::string& problem) {
   const std::string source = "fuzz-source";
-  try {
+  return fuzz::classify(source, [&] {
     const MeasuredProfile p = parse_laser_profile(text, source);
     const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-    if (p.z_m.size() < 2) problem = "fewer than 2 points";
-    if (!(std::isfinite(p.spacing_m) && p.spacing_m > 0)) problem = "bad spacing";
-    if (!std::isfinite(p.x0_m)) problem = "non-finite x0";
+    std::string violation;
+    if (p.z_m.size() < 2) violation = "fewer than 2 points";
+    if (!(std::isfinite(p.spacing_m) && p.spacing_m > 0)) violation = "bad spacing";
+    if (!std::isfinite(p.x0_m)) violation = "non-finite x0";
     for (double v : p.z_m)
-      if (!std::isfinite(v)) problem = "a non-finite height";
-    if (p.dropouts + p.spikes > p.z_m.size()) problem = "more dropouts and spikes than points";
-    if (p.z_m.size() + p.trimmed_points > lines) problem = "more rows than lines";
-    if (p.source != source) problem = "wrong source";
-    return Outcome::parsed;
-  } catch (const InputError& e) {
-    if (std::string(e.what()).rfind(source, 0) != 0) problem = std::string("message without the source: ") + e.what();
-    return Outcome::input_error;
-  } catch (const std::exception& e) {
-    problem = std::string("unexpected exception: ") + e.what();
-    return Outcome::other;
-  } catch (...) {
-    problem = "unexpected non-standard exception";
-    return Outcome::other;
-  }
+      if (!std::isfinite(v)) violation = "a non-finite height";
+    if (p.dropouts + p.spikes > p.z_m.size()) violation = "more dropouts and spikes than points";
+    if (p.z_m.size() + p.trimmed_points > lines) violation = "more rows than lines";
+    if (p.source != source) violation = "wrong source";
+    return violation;
+  }, problem);
 }
 
-const std::string alphabet = "0123456789.\t\n\r -+eENa";
-const std::vector<std::string> tokens = {
-    "NaN", "nan", "inf", "-inf", "1e999", "1e-400", "47.5", "-3.0", "\t", "\t\t", "\r\n", "\n",
-    "*****DATA*****", "*****DATA*****\t\t\r\n", "Data Point No:\tDistance (mm)\tDepth (mm)\r\n",
-    "Distance (mm)", "Depth (mm)", std::string(1, '\0'), "\xEF\xBB\xBF", "\xff", "0x1p3",
-    "99999999999999999999999999", "1.000\t0.000\t1.0\r\n", "2.000\t0.037\t47.0\r\n"};
+const fuzz::Mutations mutations{
+    .alphabet = "0123456789.\t\n\r -+eENa",
+    .tokens = {"NaN", "nan", "inf", "-inf", "1e999", "1e-400", "47.5", "-3.0", "\t", "\t\t", "\r\n", "\n",
+               "*****DATA*****", "*****DATA*****\t\t\r\n", "Data Point No:\tDistance (mm)\tDepth (mm)\r\n",
+               "Distance (mm)", "Depth (mm)", std::string(1, '\0'), "\xEF\xBB\xBF", "\xff", "0x1p3",
+               "99999999999999999999999999", "1.000\t0.000\t1.0\r\n", "2.000\t0.037\t47.0\r\n"},
+    .max_erase = 16,
+    .max_chunk = 64,
+    .truncate_one_in = 4,
+    // Overwrite a line's depth with a plate or a wild value.
+    .extra =
+        [](std::string& text, std::size_t at, std::mt19937_64& rng) {
+          const auto tab = text.rfind('\t', at);
+          if (tab != std::string::npos) text.replace(tab + 1, std::min<std::size_t>(5, text.size() - tab - 1), rng() % 2 ? "47.00" : "-9e9");
+        },
+};
 
-char random_byte(std::mt19937_64& rng) {
-  if (rng() % 10 < 7) return alphabet[rng() % alphabet.size()];
-  return static_cast<char>(static_cast<unsigned char>(rng() % 256));
-}
-
-std::string mutate(std::string text, std::mt19937_64& rng) {
+std::string mutate(const std::string& text, std::mt19937_64& rng) {
   // One mutation half of the time (the format is strict: most damage is an error, and the
   // fuzzer must also reach the parsed outcome in bulk), else up to 8.
   const int count = rng() % 2 ? 1 : 1 + static_cast<int>(rng() % 8);
-  for (int i = 0; i < count; ++i) {
-    const std::size_t at = text.empty() ? 0 : rng() % (text.size() + 1);
-    switch (rng() % 7) {
-      case 0:  // overwrite a byte
-        if (at < text.size()) text[at] = random_byte(rng);
-        break;
-      case 1:  // insert a byte
-        text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), random_byte(rng));
-        break;
-      case 2:  // delete a run
-        if (at < text.size()) text.erase(at, 1 + rng() % 16);
-        break;
-      case 3: {  // duplicate a chunk somewhere
-        if (at < text.size()) {
-          const std::string chunk = text.substr(at, 1 + rng() % 64);
-          text.insert(rng() % (text.size() + 1), chunk);
-        }
-        break;
-      }
-      case 4:  // insert a token
-        text.insert(at, tokens[rng() % tokens.size()]);
-        break;
-      case 5: {  // overwrite a line's depth with a plate or a wild value
-        const auto tab = text.rfind('\t', at);
-        if (tab != std::string::npos) text.replace(tab + 1, std::min<std::size_t>(5, text.size() - tab - 1), rng() % 2 ? "47.00" : "-9e9");
-        break;
-      }
-      default:  // truncate
-        if (rng() % 4 == 0) text.resize(at);
-        break;
-    }
-  }
-  return text;
+  return mutations.apply(text, rng, count);
 }
 
 // The first and last `rows` data rows of a real record, with its header: a short real seed.
@@ -153,17 +102,16 @@ TEST(LaserFuzz, RandomAndMutatedInputsReturnOrThrowInputError) {
     if (i >= inputs) {
       text = mutate(real[rng() % real.size()], rng);
     } else if (i % 3 == 0) {
-      const std::size_t length = rng() % 513;
-      for (std::size_t j = 0; j < length; ++j) text += random_byte(rng);
+      text = fuzz::random_text(rng, mutations.alphabet, 512);
       if (rng() % 2) text = "*****DATA*****\nDistance (mm)\tDepth (mm)\n" + text;
     } else {
       text = mutate(seeds[rng() % seeds.size()], rng);
     }
     std::string problem;
     const Outcome outcome = parse_checked(text, problem);
-    (outcome == Outcome::parsed ? parsed : rejected) += 1;
+    (outcome == Outcome::accepted ? parsed : rejected) += 1;
     if (!problem.empty() && ++failures <= 5) {
-      ADD_FAILURE() << "input " << i << ": " << problem << "\n  bytes: " << hex_dump(text);
+      ADD_FAILURE() << "input " << i << ": " << problem << "\n  bytes: " << fuzz::hex_dump(text);
     }
   }
   std::printf("  %d inputs: %d parsed, %d rejected with InputError\n", inputs + real_inputs, parsed, rejected);

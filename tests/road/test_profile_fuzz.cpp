@@ -7,18 +7,16 @@
 // each must do: "ok_*" reads, "bad_*" is an InputError.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 #include "road/height_map_hdf5.hpp"
 #include "road/profile_csv.hpp"
 #include "road/profile_file.hpp"
@@ -31,38 +29,8 @@ namespace fs = std::filesystem;
 const fs::path csv_corpus{ROLLNOISE_PROFILE_CSV_CORPUS_DIR};
 const fs::path hdf5_corpus{ROLLNOISE_HEIGHT_MAP_HDF5_CORPUS_DIR};
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::vector<fs::path> files_in(const fs::path& dir) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file()) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-enum class Outcome { read, input_error, other };
-
-// Runs `read`, then `check` on its result; records any violation in `problem`.
-template <class Read>
-Outcome run_checked(const std::string& source, Read read, std::string& problem) {
-  try {
-    problem = read();
-    return Outcome::read;
-  } catch (const InputError& e) {
-    if (std::string(e.what()).rfind(source, 0) != 0) problem = std::string("message without the source: ") + e.what();
-    return Outcome::input_error;
-  } catch (const std::exception& e) {
-    problem = std::string("unexpected exception: ") + e.what();
-    return Outcome::other;
-  } catch (...) {
-    problem = "unexpected non-standard exception";
-    return Outcome::other;
-  }
-}
+using fuzz::Outcome;
+using fuzz::read_bytes;
 
 bool increasing(const std::vector<double>& v) {
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -110,62 +78,32 @@ std::string check_grid(const HeightMapGrid& g) {
   return "";
 }
 
-char random_byte(std::mt19937_64& rng, const std::string& alphabet) {
-  if (!alphabet.empty() && rng() % 10 < 7) return alphabet[rng() % alphabet.size()];
-  return static_cast<char>(static_cast<unsigned char>(rng() % 256));
+// Flip one bit (binary formats: lengths, offsets, flags).
+void flip_a_bit(std::string& text, std::size_t at, std::mt19937_64& rng) {
+  if (at < text.size()) text[at] = static_cast<char>(text[at] ^ (1 << (rng() % 8)));
 }
 
-std::string mutate(std::string text, std::mt19937_64& rng, const std::string& alphabet,
-                   const std::vector<std::string>& tokens) {
+std::string mutate(const std::string& text, std::mt19937_64& rng, const fuzz::Mutations& mutations) {
   const int count = 1 + static_cast<int>(rng() % 8);
-  for (int i = 0; i < count; ++i) {
-    const std::size_t at = text.empty() ? 0 : rng() % (text.size() + 1);
-    switch (rng() % 7) {
-      case 0:
-        if (at < text.size()) text[at] = random_byte(rng, alphabet);
-        break;
-      case 1:
-        text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), random_byte(rng, alphabet));
-        break;
-      case 2:
-        if (at < text.size()) text.erase(at, 1 + rng() % 8);
-        break;
-      case 3:
-        if (at < text.size()) {
-          const std::string chunk = text.substr(at, 1 + rng() % 16);
-          text.insert(rng() % (text.size() + 1), chunk);
-        }
-        break;
-      case 4:
-        text.insert(at, tokens[rng() % tokens.size()]);
-        break;
-      case 5:  // flip one bit (binary formats: lengths, offsets, flags)
-        if (at < text.size()) text[at] = static_cast<char>(text[at] ^ (1 << (rng() % 8)));
-        break;
-      default:
-        if (rng() % 4 == 0) text.resize(at);  // truncate (rarely: it ends every other change)
-        break;
-    }
-  }
-  return text;
+  return mutations.apply(text, rng, count);
 }
 
 // ---- profile CSV ----
 
 Outcome parse_profile_checked(const std::string& text, std::string& problem) {
   const std::string source = "fuzz-profile";
-  return run_checked(source, [&] { return check_table(parse_profile_csv(text, source)); }, problem);
+  return fuzz::classify(source, [&] { return check_table(parse_profile_csv(text, source)); }, problem);
 }
 
 TEST(ProfileCsvFuzz, CorpusFilesBehaveAsNamed) {
-  const auto files = files_in(csv_corpus);
+  const auto files = fuzz::sorted_files(csv_corpus);
   ASSERT_GE(files.size(), 10u) << "corpus not found in " << csv_corpus;
   for (const auto& path : files) {
     const std::string name = path.filename().string();
     std::string problem;
     const Outcome outcome = parse_profile_checked(read_bytes(path), problem);
     EXPECT_EQ(problem, "") << name;
-    EXPECT_EQ(outcome, name.rfind("ok_", 0) == 0 ? Outcome::read : Outcome::input_error) << name;
+    EXPECT_EQ(outcome, name.rfind("ok_", 0) == 0 ? Outcome::accepted : Outcome::input_error) << name;
     // Through the file loader: messages name the file; what reads is cleaned and uniform.
     try {
       const LoadedProfile p = load_profile_file(path);
@@ -178,15 +116,18 @@ TEST(ProfileCsvFuzz, CorpusFilesBehaveAsNamed) {
 }
 
 TEST(ProfileCsvFuzz, RandomAndMutatedInputsReturnOrThrowInputError) {
-  const std::string alphabet = "0123456789.,eE+-\n\r# \txyz_[]m=u";
-  const std::vector<std::string> tokens = {
-      "nan", "NaN", "inf", "1e999", "-1e999", "4.9e-324", ",", ",,", "\n", "\r\n", "#", std::string(1, '\0'),
-      "x", "z", "z_1", "z_2", "z_0", "z_99999999999999999999", "_mm", "_m", "_um", " [mm]", " [m]", "[", "]",
-      "# y = 0, 1\n", "# y [mm] = -50, 0, 50\n", "# y =\n", "# y_mm = 1e308, 1e309\n", "x,z\n", "x,z_1,z_2\n",
-      "0,0\n", "1,\n", "\xC2\xB5m", "\xEF\xBB\xBF"};
+  const fuzz::Mutations mutations{
+      .alphabet = "0123456789.,eE+-\n\r# \txyz_[]m=u",
+      .tokens = {"nan", "NaN", "inf", "1e999", "-1e999", "4.9e-324", ",", ",,", "\n", "\r\n", "#", std::string(1, '\0'),
+                 "x", "z", "z_1", "z_2", "z_0", "z_99999999999999999999", "_mm", "_m", "_um", " [mm]", " [m]", "[", "]",
+                 "# y = 0, 1\n", "# y [mm] = -50, 0, 50\n", "# y =\n", "# y_mm = 1e308, 1e309\n", "x,z\n", "x,z_1,z_2\n",
+                 "0,0\n", "1,\n", "\xC2\xB5m", "\xEF\xBB\xBF"},
+      .truncate_one_in = 4,
+      .extra = flip_a_bit,
+  };
   std::vector<std::string> seeds = {"x,z\n0,0\n1,1\n", "# y = 0, 0.1\nx,z_1,z_2\n0,0,\n1,,1\n2,2,2\n",
                                     "x [mm],z [um]\n0,1\n1,2\n"};
-  for (const auto& path : files_in(csv_corpus)) seeds.push_back(read_bytes(path));
+  for (const auto& path : fuzz::sorted_files(csv_corpus)) seeds.push_back(read_bytes(path));
 
   std::mt19937_64 rng(20241124);  // fixed: the same inputs on every run
   const int inputs = 20000;
@@ -194,14 +135,13 @@ TEST(ProfileCsvFuzz, RandomAndMutatedInputsReturnOrThrowInputError) {
   for (int i = 0; i < inputs; ++i) {
     std::string text;
     if (i % 4 == 0) {
-      const std::size_t length = rng() % 257;
-      for (std::size_t j = 0; j < length; ++j) text += random_byte(rng, alphabet);
+      text = fuzz::random_text(rng, mutations.alphabet, 256);
     } else {
-      text = mutate(seeds[rng() % seeds.size()], rng, alphabet, tokens);
+      text = mutate(seeds[rng() % seeds.size()], rng, mutations);
     }
     std::string problem;
     const Outcome outcome = parse_profile_checked(text, problem);
-    (outcome == Outcome::read ? read : rejected) += 1;
+    (outcome == Outcome::accepted ? read : rejected) += 1;
     if (!problem.empty() && ++failures <= 5) ADD_FAILURE() << "input " << i << ": " << problem;
   }
   std::printf("  profile CSV: %d inputs: %d read, %d rejected with InputError\n", inputs, read, rejected);
@@ -229,20 +169,20 @@ class HeightMapHdf5Fuzz : public ::testing::Test {
       std::ofstream out(path, std::ios::binary | std::ios::trunc);
       out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     }
-    return run_checked(path.string(), [&] { return check_grid(read_height_map_hdf5(path)); }, problem);
+    return fuzz::classify(path.string(), [&] { return check_grid(read_height_map_hdf5(path)); }, problem);
   }
   fs::path dir_;
 };
 
 TEST_F(HeightMapHdf5Fuzz, CorpusFilesBehaveAsNamed) {
-  const auto files = files_in(hdf5_corpus);
+  const auto files = fuzz::sorted_files(hdf5_corpus);
   ASSERT_GE(files.size(), 8u) << "corpus not found in " << hdf5_corpus;
   for (const auto& path : files) {
     const std::string name = path.filename().string();
     std::string problem;
-    const Outcome outcome = run_checked(path.string(), [&] { return check_grid(read_height_map_hdf5(path)); }, problem);
+    const Outcome outcome = fuzz::classify(path.string(), [&] { return check_grid(read_height_map_hdf5(path)); }, problem);
     EXPECT_EQ(problem, "") << name;
-    EXPECT_EQ(outcome, name.rfind("ok_", 0) == 0 ? Outcome::read : Outcome::input_error) << name;
+    EXPECT_EQ(outcome, name.rfind("ok_", 0) == 0 ? Outcome::accepted : Outcome::input_error) << name;
   }
   // The values of one file in every encoding: float32 z in mm, variable-length unit strings.
   const HeightMapGrid g = read_height_map_hdf5(hdf5_corpus / "ok_float32_z_in_mm.h5");
@@ -257,28 +197,30 @@ TEST_F(HeightMapHdf5Fuzz, CorpusFilesBehaveAsNamed) {
 
 TEST_F(HeightMapHdf5Fuzz, RandomAndMutatedFilesReturnOrThrowInputError) {
   std::vector<std::string> seeds;
-  for (const auto& path : files_in(hdf5_corpus))
+  for (const auto& path : fuzz::sorted_files(hdf5_corpus))
     if (path.filename().string().rfind("ok_", 0) == 0) seeds.push_back(read_bytes(path));
   ASSERT_FALSE(seeds.empty());
   const std::string signature("\x89HDF\r\n\x1a\n", 8);
-  const std::vector<std::string> tokens = {std::string(8, '\xff'), std::string(8, '\0'), signature,
-                                           std::string("\x01\x00\x00\x00", 4), std::string("\xff\xff\xff\x7f", 4),
-                                           "TREE", "HEAP", "SNOD", "OHDR", "units", "mm"};
+  // Any byte (no alphabet: the format is binary).
+  const fuzz::Mutations mutations{
+      .tokens = {std::string(8, '\xff'), std::string(8, '\0'), signature, std::string("\x01\x00\x00\x00", 4),
+                 std::string("\xff\xff\xff\x7f", 4), "TREE", "HEAP", "SNOD", "OHDR", "units", "mm"},
+      .truncate_one_in = 4,
+      .extra = flip_a_bit,
+  };
   std::mt19937_64 rng(20241125);
   const int inputs = 3000;
   int read = 0, rejected = 0, failures = 0;
   for (int i = 0; i < inputs; ++i) {
     std::string bytes;
     if (i % 10 == 0) {  // random bytes behind the signature
-      bytes = signature;
-      const std::size_t length = rng() % 4096;
-      for (std::size_t j = 0; j < length; ++j) bytes += static_cast<char>(static_cast<unsigned char>(rng() % 256));
+      bytes = signature + fuzz::random_text(rng, "", 4095);
     } else {
-      bytes = mutate(seeds[rng() % seeds.size()], rng, "", tokens);
+      bytes = mutate(seeds[rng() % seeds.size()], rng, mutations);
     }
     std::string problem;
     const Outcome outcome = read_checked(bytes, problem);
-    (outcome == Outcome::read ? read : rejected) += 1;
+    (outcome == Outcome::accepted ? read : rejected) += 1;
     if (!problem.empty() && ++failures <= 5) ADD_FAILURE() << "input " << i << ": " << problem;
   }
   std::printf("  HDF5 height map: %d inputs: %d read, %d rejected with InputError\n", inputs, read, rejected);

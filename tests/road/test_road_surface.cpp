@@ -25,6 +25,7 @@
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 #include "road/height_map_surface.hpp"
 #include "road/random_surface.hpp"
 #include "road/road_profile.hpp"
@@ -708,10 +709,6 @@ TEST(HeightMapSurface, FuzzedInputsBuildOrThrowInputError) {
                                            "0.1", "0.30000000000000004", ",", "\n", "x,y,z\n",
                                            std::string(1, '\0'), "\xEF\xBB\xBF", "1e-300"};
   std::mt19937_64 rng(20240612);  // fixed: the same inputs on every run
-  auto random_byte = [&] {
-    if (rng() % 10 < 7) return alphabet[rng() % alphabet.size()];
-    return static_cast<char>(static_cast<unsigned char>(rng() % 256));
-  };
   const int inputs = 4000;
   int built = 0, rejected = 0, failures = 0;
   for (int n = 0; n < inputs; ++n) {
@@ -719,8 +716,7 @@ TEST(HeightMapSurface, FuzzedInputsBuildOrThrowInputError) {
     switch (n % 4) {
       case 0: {  // random bytes, sometimes after a valid header
         if (rng() % 2) text = "x,y,z\n";
-        const std::size_t length = rng() % 200;
-        for (std::size_t k = 0; k < length; ++k) text += random_byte();
+        text += fuzz::random_text(rng, alphabet, 199);
         break;
       }
       case 1: {  // byte mutations of the valid map
@@ -729,8 +725,8 @@ TEST(HeightMapSurface, FuzzedInputsBuildOrThrowInputError) {
         for (int k = 0; k < count; ++k) {
           const std::size_t at = text.empty() ? 0 : rng() % text.size();
           switch (rng() % 4) {
-            case 0: if (!text.empty()) text[at] = random_byte(); break;
-            case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), random_byte()); break;
+            case 0: if (!text.empty()) text[at] = fuzz::random_byte(rng, alphabet); break;
+            case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), fuzz::random_byte(rng, alphabet)); break;
             case 2: if (!text.empty()) text.erase(at, 1 + rng() % 4); break;
             default: text.insert(at, tokens[rng() % tokens.size()]); break;
           }
