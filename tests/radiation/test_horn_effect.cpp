@@ -65,29 +65,31 @@ TyreSurfaceMeshSpec graded_spec(double refinement) {
   return s;
 }
 
-// n·∇G at collocation point m for a source at `s`: on the tread the mean over the point's cell
-// (sub-sampled finer where the source is close), on the sidewalls the point value.
-Complex normal_gradient(const TyreSurfaceMeshSpec& spec, const TyreSurfaceMesh& mesh, Eigen::Index m,
+// n·∇G at collocation point m for a source at `s`: on the tread the area-weighted mean over the
+// point's cell on the (deformed or undeformed) surface (sub-sampled finer where the source is
+// close), on the sidewalls the point value.
+Complex normal_gradient(const TyreSurfaceShape& shape, const TyreSurfaceMesh& mesh, Eigen::Index m,
                         const Eigen::Vector3d& s, double k) {
   const Eigen::Vector3cd normal = mesh.normals.col(m).cast<Complex>();
   if (m >= mesh.tread_points) return normal.dot(helmholtz_green_gradient(mesh.points.col(m), s, k, true));
   const auto a = static_cast<std::size_t>(m % mesh.tread_around);
-  const auto b = static_cast<double>(m / mesh.tread_around);
-  const double phi0 = mesh.tread_angle_edges[a], phi1 = mesh.tread_angle_edges[a + 1];
-  const double dy = spec.width / spec.across, y0 = -0.5 * spec.width + b * dy;
+  const auto b = static_cast<std::size_t>(m / mesh.tread_around);
+  const double psi0 = mesh.tread_angle_edges[a], psi1 = mesh.tread_angle_edges[a + 1];
+  const double y0 = mesh.tread_row_edges[b], y1 = mesh.tread_row_edges[b + 1];
   const double distance = (mesh.points.col(m) - s).norm();
   const auto subdivisions = [&](double size) { return std::clamp(static_cast<int>(std::ceil(4.0 * size / distance)), 1, 64); };
-  const int na = subdivisions(spec.radius * (phi1 - phi0)), nb = subdivisions(dy);
-  const double axle = spec.radius + spec.clearance;
+  const double radius = (mesh.points.col(m) - Eigen::Vector3d(0.0, mesh.points(1, m), mesh.axle_height)).norm();
+  const int na = subdivisions(radius * (psi1 - psi0)), nb = subdivisions(y1 - y0);
   Complex sum = 0.0;
+  double weight = 0.0;
   for (int i = 0; i < na; ++i)
     for (int j = 0; j < nb; ++j) {
-      const double phi = phi0 + (i + 0.5) * (phi1 - phi0) / na;
-      const Eigen::Vector3d x(spec.radius * std::sin(phi), y0 + (j + 0.5) * dy / nb, axle - spec.radius * std::cos(phi));
-      const Eigen::Vector3cd n(std::sin(phi), 0.0, -std::cos(phi));
-      sum += n.dot(helmholtz_green_gradient(x, s, k, true));
+      const double psi = psi0 + (i + 0.5) * (psi1 - psi0) / na, y = y0 + (j + 0.5) * (y1 - y0) / nb;
+      const double w = shape.area_element(psi, y);
+      sum += w * shape.normal(psi, y).cast<Complex>().dot(helmholtz_green_gradient(shape.position(psi, y), s, k, true));
+      weight += w;
     }
-  return sum / static_cast<double>(na * nb);
+  return sum / weight;
 }
 
 struct HornResult {
@@ -101,6 +103,13 @@ struct HornResult {
 HornResult solve_horn(const TyreSurfaceMeshSpec& spec, double f) {
   const auto started = std::chrono::steady_clock::now();
   const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
+  const TyreSurfaceShape shape(spec);
+  const bool deformed = spec.geometry == TyreGeometry::deformed;
+  // Deformed: the horn source 5 cm ahead of the patch's leading edge, the interior source above
+  // the edge, 1 cm inside the tread.
+  const double edge = deformed ? 0.5 * spec.deformation.patch_length : 0.0;
+  const Eigen::Vector3d horn_source = kHornSource + Eigen::Vector3d(edge, 0.0, 0.0);
+  const Eigen::Vector3d inside = deformed ? Eigen::Vector3d(edge, 0.0, spec.clearance + 0.01) : kInsideNearContact;
   const EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true);
   const Medium air;
   const double omega = 2 * kPi * f, k = omega / air.sound_speed;
@@ -111,22 +120,22 @@ HornResult solve_horn(const TyreSurfaceMeshSpec& spec, double f) {
   // source, 1 … R those of a source at each receiver, then the interior source's own +v.
   Eigen::MatrixXcd v(mesh.points.cols(), nr + 2);
   for (Eigen::Index m = 0; m < v.rows(); ++m) {
-    v(m, 0) = normal_gradient(spec, mesh, m, kHornSource, k);  // −v_inc = +n·∇G
-    for (Eigen::Index r = 0; r < nr; ++r) v(m, 1 + r) = normal_gradient(spec, mesh, m, receivers.col(r), k);
-    v(m, nr + 1) = -normal_gradient(spec, mesh, m, kInsideNearContact, k);
+    v(m, 0) = normal_gradient(shape, mesh, m, horn_source, k);  // −v_inc = +n·∇G
+    for (Eigen::Index r = 0; r < nr; ++r) v(m, 1 + r) = normal_gradient(shape, mesh, m, receivers.col(r), k);
+    v(m, nr + 1) = -normal_gradient(shape, mesh, m, inside, k);
   }
   const Eigen::MatrixXcd q = model.solve(omega).strengths(v);
   Eigen::Matrix3Xd at(3, nr + 1);
-  at << receivers, kHornSource;
+  at << receivers, horn_source;
   const Eigen::MatrixXcd p = model.pressure_matrix(omega, at) * q;
   HornResult out;
   for (Eigen::Index r = 0; r < nr; ++r) {
-    const Complex incident = iwr * helmholtz_green(receivers.col(r), kHornSource, k, true);
+    const Complex incident = iwr * helmholtz_green(receivers.col(r), horn_source, k, true);
     out.direct_db.push_back(20.0 * std::log10(std::abs(incident + p(r, 0)) / std::abs(incident)));
     out.reciprocal_db.push_back(20.0 * std::log10(std::abs(incident + p(nr, 1 + r)) / std::abs(incident)));
   }
   for (Eigen::Index r = 0; r <= nr; ++r) {
-    const Complex exact = iwr * helmholtz_green(at.col(r), kInsideNearContact, k, true);
+    const Complex exact = iwr * helmholtz_green(at.col(r), inside, k, true);
     out.interior_error.push_back(std::abs(p(r, nr + 1) - exact) / std::abs(exact));
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
