@@ -49,8 +49,9 @@
 // spacing/refinement wide where the tread meets the road and grow geometrically by
 // `contact_growth` per cell away from it up to the uniform spacing 2πR/around: undeformed,
 // from the bottom line both ways; deformed, from both patch edges both ways (into the patch and
-// round the tyre). The sources keep the depth rule locally (1.5 of the local spacing around),
-// so near the contact they sit a few mm inside the tread, above the road.
+// round the tyre). The sources keep the depth rule locally: 1.5 of the larger of the tread cell's
+// sides (around and across), at most the uniform depth; near the contact they sit about 1.5
+// row spacings (17 mm with 16 rows) inside the tread, above the road.
 #include <vector>
 
 #include <Eigen/Core>
@@ -87,7 +88,7 @@ struct TyreSurfaceMeshSpec {
   int across = 8;             // tread collocation points across (2.3 cm)
   int sidewall_rings = 12;    // rings of collocation points on each sidewall (2.6 cm)
   double source_depth = 0.0;  // m inside the surface at the uniform spacing; 0: 1.5 tread point
-                              // spacings. Graded tread: scaled with the local spacing around.
+                              // spacings. Tread: at most 1.5 × the larger side of the cell.
   int source_stride = 2;      // one source per this many collocation points (chosen on the half
                               // y ≤ 0 and mirrored)
   // Graded tread: the cells where the tread meets the road are 2πR/(around·contact_refinement)
