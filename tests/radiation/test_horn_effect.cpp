@@ -203,7 +203,7 @@ TyreSurfaceMeshSpec deformed_spec(double refinement, double clearance = 0.002) {
 
 TEST(HornEffect, DeformedMeshResolvesFieldsNearThePatchEdge) {
   // A monopole 1 cm inside the tread above the patch's leading edge, at 3 kHz: its field at the
-  // receivers and at the horn point. Measured 0.4–2.2 %.
+  // receivers and at the horn point. Measured 0.5–1.6 % at the receivers, 1.6 % at the horn point.
   const HornResult& r = horn("deformed", deformed_spec(10.0), 3000.0);
   for (std::size_t i = 0; i < r.interior_error.size(); ++i) {
     EXPECT_LE(r.interior_error[i], 0.06) << "check " << i;
