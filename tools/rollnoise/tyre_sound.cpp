@@ -181,7 +181,25 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     result["audio_rate_hz"] = settings.audio_rate;
     result["wav_duration_s"] = static_cast<double>(signals.front().pressure.size()) / settings.audio_rate;
   }
+  // The mesh's flat: the extent of its vertices on the road (at the clearance), to compare with
+  // the contact solution's patch_length_m and patch_width_m.
+  double flat_x0 = 0.0, flat_x1 = 0.0, flat_y0 = 0.0, flat_y1 = 0.0;
+  bool flat = false;
+  const TyreSurfaceMesh& mesh = radiation.mesh();
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
+    if (settings.radiation.mesh.geometry != TyreGeometry::deformed ||
+        mesh.vertices(2, v) > settings.radiation.mesh.clearance * (1.0 + 1e-9))
+      continue;
+    const double x = mesh.vertices(0, v), y = mesh.vertices(1, v);
+    flat_x0 = flat ? std::min(flat_x0, x) : x;
+    flat_x1 = flat ? std::max(flat_x1, x) : x;
+    flat_y0 = flat ? std::min(flat_y0, y) : y;
+    flat_y1 = flat ? std::max(flat_y1, y) : y;
+    flat = true;
+  }
   result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
+                         {"flat_length_m", flat_x1 - flat_x0},
+                         {"flat_width_m", flat_y1 - flat_y0},
                          {"anchors", radiation.anchors(sample_rate).size()},
                          {"collocation_points", radiation.mesh().points.cols()},
                          {"equivalent_sources", radiation.mesh().sources.cols()},
