@@ -60,8 +60,14 @@ Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_acros
   // Around: belt cells centred on 2πg/Nθ start half a cell early.
   const double belt_step = kTwoPi / belt_around;
   const std::vector<Overlap> around = overlaps(belt_around, -0.5 * belt_step, belt_step, edges, true);
-  std::vector<double> across_edges(static_cast<std::size_t>(mesh_across) + 1);
-  for (std::size_t c = 0; c < across_edges.size(); ++c) across_edges[c] = static_cast<double>(c) / mesh_across;
+  // Across: the mesh's row edges as fractions of the width (uniform, or with the contact
+  // patch's sides as row edges on a deformed mesh).
+  const std::vector<double>& rows = mesh.tread_row_edges;
+  if (rows.size() != static_cast<std::size_t>(mesh_across) + 1 || !std::is_sorted(rows.begin(), rows.end()) ||
+      !(rows.back() > rows.front()))
+    throw std::invalid_argument("belt sampling: the mesh's tread rows must span the width in Nb + 1 rising edges");
+  std::vector<double> across_edges(rows.size());
+  for (std::size_t c = 0; c < rows.size(); ++c) across_edges[c] = (rows[c] - rows.front()) / (rows.back() - rows.front());
   const std::vector<Overlap> across = overlaps(belt_across, 0.0, 1.0 / belt_across, across_edges, false);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(around.size() * across.size() / std::max(1, std::min(mesh_around, mesh_across)));

@@ -9,8 +9,13 @@
 // Conventions: belt cell (j, g) is centred at the angle 2πg/Nθ from the bottom of the tyre, in
 // the direction of travel, and at y_j = (j + ½)·b/Ny across the belt (SurfaceResponse); mesh tread
 // cell a + Na·c spans the angles [edges[a], edges[a + 1]] of mesh.tread_angle_edges (uniform,
-// or graded towards the contact) and is centred at y = −b/2 + (c + ½)·b/Nb
-// (tyre_surface_mesh.hpp). Both bands span the same width b.
+// or graded towards the contact; material angles, the belt's arc position over R, so the same
+// belt cells land in the same cells whether the mesh is deformed or not) and the rows
+// [row_edges[c], row_edges[c + 1]] of mesh.tread_row_edges (tyre_surface_mesh.hpp). Both bands
+// span the same width b. On a deformed mesh a cell's area is that of the deformed surface: on the
+// flat it equals the belt's (x = Rψ there); beyond it the cells are up to 2 % smaller than their
+// material area (the radius drops by the deflection next to the patch), and the volume
+// velocity the mesh carries is v·ΔS of the deformed cell.
 #include <Eigen/SparseCore>
 
 #include "radiation/tyre_surface_mesh.hpp"

@@ -39,7 +39,7 @@ TyreRadiation::TyreRadiation(const TyreRadiationSettings& settings, Eigen::Matri
       mesh_(make_tyre_surface_mesh(settings.mesh)),
       model_(mesh_.sources, mesh_.points, mesh_.normals, true, settings.medium),
       receivers_(std::move(receivers)),
-      centre_(0.0, 0.0, settings.mesh.radius + settings.mesh.clearance) {
+      centre_(0.0, 0.0, mesh_.axle_height) {
   if (!(settings_.max_frequency_hz > kLowestAnchorHz) || !std::isfinite(settings_.max_frequency_hz))
     throw std::invalid_argument("tyre radiation: the maximum frequency must be above 20 Hz");
   if (!(settings_.anchor_spacing_hz >= 5.0 && settings_.anchor_spacing_hz <= 1000.0))

@@ -233,7 +233,7 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
                                   {{"tyre", "file", "\"" + model + "\""}, rough_surface(),
                                    {"rolling", "duration", "0.02"},
                                    {"radiation", "mesh_around", "32"},
-                                   {"radiation", "mesh_across", "2"},
+                                   {"radiation", "mesh_across", "4"},
                                    {"radiation", "sidewall_rings", "4"},
                                    {"radiation", "max_frequency", "1500"},
                                    {"radiation", "anchor_spacing", "250"},
@@ -256,6 +256,12 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   EXPECT_GT(summary["full_scale_pa"].get<double>(), 0.0);
   EXPECT_GE(summary["wav_duration_s"].get<double>(), 5.0);
   EXPECT_TRUE(summary["sound_power"]["LwA_dB"].is_number());
+  // The radiating body is the loaded tyre (issue 10 §2): flat over the run's mean contact patch,
+  // to the mesh's cell size (the patch's edges are cell edges: equal to rounding).
+  EXPECT_EQ(summary["radiation"]["geometry"], "deformed");
+  EXPECT_NEAR(summary["radiation"]["flat_length_m"].get<double>(), summary["patch_length_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(summary["radiation"]["flat_width_m"].get<double>(), summary["patch_width_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(summary["radiation"]["axle_height_m"].get<double>(), 0.316 + 0.002 - summary["indentation_m"].get<double>(), 1e-9);
 
   // The energy budget (issue 10 §1): one row per third-octave band from 100 Hz to the top of the
   // radiated band (1.25 kHz here), the stages and their estimates, a level per receiver.
@@ -307,6 +313,7 @@ TEST(SimulateCli, PlateTyreBadSoundSettingsAreNamed) {
       {{"radiation", "anchor_spacing", "0"}, {"[radiation] anchor_spacing"}},
       {{"radiation", "mesh_around", "3"}, {"[radiation] mesh_around"}},
       {{"radiation", "contact_refinement", "0.5"}, {"[radiation] contact_refinement"}},
+      {{"radiation", "geometry", "\"round\""}, {"[radiation] geometry", "deformed", "undeformed"}},
       {{"radiation", "colour", "\"red\""}, {"[radiation] colour", "unknown key"}},
       {{"radiation", "receivers", "[{name = \"in\", x = 0.0, y = 0.0, z = 0.3}]"}, {"[radiation] receivers", "inside the tyre"}},
       {{"radiation", "receivers", "[\"cpx_middle\"]"}, {"[radiation] receivers", "cpx_middle", "cpx_front"}},

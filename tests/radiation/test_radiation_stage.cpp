@@ -39,7 +39,17 @@ TEST(BeltSampling, KeepsVolumeVelocityAndConstants) {
         field(j + across * g) = std::sin(0.37 * g) * (1.0 + 0.1 * j) + (g == 0 ? 5.0 : 0.0) + (g == 3 ? 2.0 : 0.0);
     const Eigen::VectorXd sampled = s * field;
     const double band_area = 2 * kPi * spec.radius * spec.width;
-    EXPECT_NEAR(sampled.dot(mesh.areas.head(mesh.tread_points)) / band_area, field.sum() / (around * across), 1e-12);
+    // The cells' areas on the cylinder, RΔφΔy (the mesh's own areas are those of its flat
+    // polygons, the chords: 2e-4 smaller on the uniform mesh).
+    Eigen::VectorXd cell_areas(mesh.tread_points);
+    for (int c = 0; c < mesh.tread_across; ++c)
+      for (int a = 0; a < mesh_around; ++a) {
+        const auto i = static_cast<std::size_t>(a), k = static_cast<std::size_t>(c);
+        cell_areas(a + mesh_around * c) = spec.radius * (mesh.tread_angle_edges[i + 1] - mesh.tread_angle_edges[i]) *
+                                          (mesh.tread_row_edges[k + 1] - mesh.tread_row_edges[k]);
+      }
+    EXPECT_LE((mesh.areas.head(mesh.tread_points).array() / cell_areas.array() - 1.0).abs().maxCoeff(), 1e-3);
+    EXPECT_NEAR(sampled.dot(cell_areas) / band_area, field.sum() / (around * across), 1e-12);
     // A belt cell at the bottom (g = 0, angle 0, straddling it) lands in mesh cell a = 0, and one
     // a quarter turn on (angle π/2, in the direction of travel) in the mesh cell around π/2;
     // laterally, belt row j = 0 (the edge at y = 0) in mesh row 0.

@@ -143,8 +143,9 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
     if (tread_velocity) {
       // The radiating velocity leaves out the cells in contact: the road holds the tread there,
       // and what the tread displaces escapes only through the texture's channels (air pumping,
-      // not modelled). Left in, the contact patch would pump into the mesh's 2 mm clearance and
-      // be amplified by the very horn the mesh resolves.
+      // not modelled). Left in, the contact patch would pump into the mesh's 2 mm clearance (the
+      // flat of the deformed tyre, or the undeformed cylinder's lowest line) and be amplified by
+      // the very horn the mesh resolves.
       radiating = v.reshaped();
       for (std::size_t p = 0; p < cell_under.size(); ++p)
         if (t.force(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p)) > 0.0) radiating(cell_under[p]) = 0.0;
@@ -244,7 +245,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
-  const TyreSoundSettings sound =
+  TyreSoundSettings sound =
       read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width);
   output.reject_unknown_keys();
 
@@ -299,6 +300,30 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   Eigen::Index snapshot = 0;
   trace.total_force.maxCoeff(&snapshot);
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
+  // The radiating body (issue 10 §2): the loaded tyre, flattened over the run's mean contact
+  // patch (centred under the axle) with the axle lowered by the indentation; beyond the patch the
+  // belt's own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders
+  // beyond the patch's width are lifted by the crown's drop there, at least the clearance.
+  if (sound.enabled && sound.radiation.mesh.geometry == TyreGeometry::deformed) {
+    TyreDeformation& shape = sound.radiation.mesh.deformation;
+    shape.patch_length = trace.contact_length.mean();
+    shape.patch_width = std::min(trace.contact_width.mean(), grid.width);
+    shape.indentation = trace.indentation;
+    shape.belt_tension = model.plate.tension_x;
+    shape.belt_bending = model.plate.bending_x;
+    shape.foundation_stiffness = model.plate.foundation_stiffness;
+    const double crown_drop = model.crown_radius > 0.0 ? (0.25 * grid.width * grid.width - 0.25 * shape.patch_width * shape.patch_width) /
+                                                             (2.0 * model.crown_radius)
+                                                       : 0.0;
+    shape.shoulder_lift = std::max(crown_drop, sound.radiation.mesh.clearance);
+    if (!(shape.patch_length > 0.0 && shape.indentation > 0.0)) {
+      std::fprintf(stderr, "rollnoise: warning: no contact patch: the tyre radiates undeformed\n");
+      sound.radiation.mesh.geometry = TyreGeometry::undeformed;
+    } else if (const std::string inside = receivers_outside_tyre(sound); !inside.empty()) {
+      const ConfigTable radiation_table = file.optional_section("radiation");
+      throw InputError(radiation_table.source_of("receivers"), "[radiation] receivers", inside);
+    }
+  }
   const Eigen::SparseMatrix<double> sampling =
       belt_to_tread_matrix(grid.circumferential, grid.lateral, make_tyre_surface_mesh(sound.radiation.mesh));
   Eigen::MatrixXd tread_velocity;

@@ -81,11 +81,18 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
   s.radiation.mesh.sidewall_rings = static_cast<int>(radiation.integer("sidewall_rings", 12, 1, 256));
   s.radiation.mesh.contact_refinement = radiation.between("contact_refinement", 0.999, 1000.001, 10.0);
   s.radiation.threads = static_cast<int>(radiation.integer("threads", 0, 0, 1024));
+  // The radiating body: the loaded tyre, flattened over the run's mean contact patch (the
+  // caller fills in the patch and the indentation once the contact is solved), or the
+  // undeformed cylinder of earlier versions.
+  s.radiation.mesh.geometry = radiation.choice("geometry", {"deformed", "undeformed"}, "deformed") == "deformed"
+                                  ? TyreGeometry::deformed
+                                  : TyreGeometry::undeformed;
   radiation.reject_unknown_keys();
   for (const Receiver& r : s.receivers) {
     if (r.name == "spb_passby")
       radiation.fail("receivers", "\"spb_passby\" is the name of the pass-by at the spb microphone; choose another name");
-    // The body: a cylinder of the tyre's radius on the axle (mesh coordinates).
+    // The body: a cylinder of the tyre's radius on the axle (mesh coordinates). The deformed
+    // tyre is checked again once its shape is known (receivers_outside_tyre).
     const double axle = radius + s.radiation.mesh.clearance;
     const double from_axis = std::hypot(r.position.x(), r.position.z() - axle);
     if (from_axis <= radius && std::abs(r.position.y()) <= 0.5 * width)
@@ -97,6 +104,19 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
   s.audio_rate = static_cast<double>(rate);
   s.wav_duration = output.between("wav_duration", 4.999, 3600.0, 5.0);
   return s;
+}
+
+std::string receivers_outside_tyre(const TyreSoundSettings& settings) {
+  const TyreSurfaceShape shape(settings.radiation.mesh);
+  const double axle = shape.axle_height();
+  for (const Receiver& r : settings.receivers) {
+    if (std::abs(r.position.y()) > 0.5 * settings.radiation.mesh.width) continue;
+    const double polar = std::atan2(r.position.x(), axle - r.position.z());
+    const double from_axis = std::hypot(r.position.x(), r.position.z() - axle);
+    if (from_axis <= shape.radius(shape.material_angle(polar), r.position.y()) || r.position.z() <= 0.0)
+      return "\"" + r.name + "\" is inside the loaded tyre; receivers must be outside it";
+  }
+  return {};
 }
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
@@ -161,10 +181,30 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     result["audio_rate_hz"] = settings.audio_rate;
     result["wav_duration_s"] = static_cast<double>(signals.front().pressure.size()) / settings.audio_rate;
   }
+  // The mesh's flat: the extent of its vertices on the road (at the clearance), to compare with
+  // the contact solution's patch_length_m and patch_width_m.
+  double flat_x0 = 0.0, flat_x1 = 0.0, flat_y0 = 0.0, flat_y1 = 0.0;
+  bool flat = false;
+  const TyreSurfaceMesh& mesh = radiation.mesh();
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
+    if (settings.radiation.mesh.geometry != TyreGeometry::deformed ||
+        mesh.vertices(2, v) > settings.radiation.mesh.clearance * (1.0 + 1e-9))
+      continue;
+    const double x = mesh.vertices(0, v), y = mesh.vertices(1, v);
+    flat_x0 = flat ? std::min(flat_x0, x) : x;
+    flat_x1 = flat ? std::max(flat_x1, x) : x;
+    flat_y0 = flat ? std::min(flat_y0, y) : y;
+    flat_y1 = flat ? std::max(flat_y1, y) : y;
+    flat = true;
+  }
   result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
+                         {"flat_length_m", flat_x1 - flat_x0},
+                         {"flat_width_m", flat_y1 - flat_y0},
                          {"anchors", radiation.anchors(sample_rate).size()},
                          {"collocation_points", radiation.mesh().points.cols()},
                          {"equivalent_sources", radiation.mesh().sources.cols()},
+                         {"geometry", settings.radiation.mesh.geometry == TyreGeometry::deformed ? "deformed" : "undeformed"},
+                         {"axle_height_m", radiation.mesh().axle_height},
                          {"time_s", radiation_seconds}};
   return result;
 }

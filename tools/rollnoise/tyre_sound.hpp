@@ -27,10 +27,15 @@ struct TyreSoundSettings {
 };
 
 // [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
-// sidewall_rings, threads; [output] wav, audio_rate, wav_duration. The tyre's radius and width
+// sidewall_rings, contact_refinement, threads, geometry ("deformed": the caller sets
+// radiation.mesh.deformation from the contact solution; "undeformed"); [output] wav, audio_rate, wav_duration. The tyre's radius and width
 // (m) shape the radiating body. Bad values are InputErrors naming the key.
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
                                            double width);
+
+// Empty when every receiver is outside the radiating body of `settings` (the deformed tyre once
+// its patch is set); otherwise the message naming the first inside it.
+std::string receivers_outside_tyre(const TyreSoundSettings& settings);
 
 // Writes spectrum.csv, sound_power.csv, <receiver>.wav (and spb_passby.wav with an spb
 // receiver) and their plots into `dir`; returns the summary entries ("levels", "full_scale_pa",
