@@ -112,8 +112,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const TyreGrid& grid = plate.grid();
   const Eigen::Index points = grid.points();
   const double dt = plate.time_step();
-  if (std::abs(dt * settings.speed - grid.dx()) > 1e-9 * grid.dx())
-    throw std::invalid_argument("rolling tyre: the time step must be dx/v");
+  const int substeps = plate.substeps();
+  if (std::abs(dt * substeps * settings.speed - grid.dx()) > 1e-9 * grid.dx())
+    throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the plate's sub-steps");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
 
@@ -174,6 +175,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd u0(points), r(points), q(points), position(points), deformation(points);
   Eigen::VectorXd previous_force = steady.force;
+  // The work of the forces is taken over one cell of travel, i.e. against the state p steps
+  // back (p sub-steps per cell), and spread over those p steps: a ring of the last p states,
+  // starting in steady rolling.
+  std::vector<Eigen::VectorXd> force_ring(static_cast<std::size_t>(substeps), steady.force);
+  std::vector<Eigen::VectorXd> deformation_ring(static_cast<std::size_t>(substeps), steady.deformation);
   // Window point (i, j) → (i − 1, j); the last column's points leave.
   std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
   for (int j = 0; j < grid.lateral; ++j)
@@ -181,7 +187,6 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
       const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
       shift_back[static_cast<std::size_t>(p)] = p - 1;
     }
-  Eigen::VectorXd previous_deformation = steady.deformation;
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
   const auto loop_started = std::chrono::steady_clock::now();
@@ -196,8 +201,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
-    // The road moves one cell towards −x per step, and the contacts on its texture with it;
-    // the patch outline stays. Of the last active set, as it is or shifted by one cell, take
+    // The road moves one cell towards −x per cell of travel (every p steps), and the contacts
+    // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
     if (n > 0 && lcp) {
@@ -245,10 +250,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
                                " s: lengthen [rolling] contact_window");
       edge_warned = true;
     }
-    trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, previous_force,
-                                                              previous_deformation);
+    const auto ring = static_cast<std::size_t>(n % static_cast<std::size_t>(substeps));
+    trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, force_ring[ring],
+                                                              deformation_ring[ring]);
+    force_ring[ring] = force;
+    deformation_ring[ring] = deformation;
     previous_force = force;
-    previous_deformation = deformation;
     trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->iterations();
     clock = std::chrono::steady_clock::now();
     engine->advance(force);

@@ -86,6 +86,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   h5.attribute("/", "speed_m_per_s", speed);
   h5.attribute("/", "static_load_N", load);
   h5.attribute("/", "time_step_s", plate.time_step());
+  h5.attribute("/", "substeps_per_cell", plate.substeps());
   h5.attribute("/", "radius_m", grid.radius);
   h5.attribute("/", "belt_width_m", grid.width);
   h5.write("/time", t.time, "s", "time of each sample; t = 0 is the start of the run in steady rolling");
@@ -154,9 +155,10 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
     displacement->append(slice.data());
     slice = v.cast<float>();
     velocity->append(slice.data());
-    // Material that starts at the top (g = Nθ/2) moves one cell towards −x per step.
-    if (n < static_cast<std::size_t>(around)) {
-      const int g = ((around / 2 - static_cast<int>(n)) % around + around) % around;
+    // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
+    const auto substeps = static_cast<std::size_t>(plate.substeps());
+    if (n % substeps == 0 && n / substeps < static_cast<std::size_t>(around)) {
+      const int g = ((around / 2 - static_cast<int>(n / substeps)) % around + around) % around;
       revolution.push_back(u(across / 2, g));
     }
   }
@@ -244,8 +246,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
+  // The radiated band reaches the upper edge of the band_top band (5623 Hz for 5 kHz) unless
+  // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   const TyreSoundSettings sound =
-      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width);
+      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width,
+                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
 
   TyreGrid grid;
@@ -262,10 +267,12 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
     throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
   }
   const KroppPlate plate(model.plate);
-  const double dt = grid.dx() / settings.speed;
+  // Sub-steps per cell so that the contact steps carry the band_top band (rolling_settings.hpp).
+  const int substeps = substeps_for_band(settings.band_top, grid.dx(), settings.speed);
+  const double dt = grid.dx() / (substeps * settings.speed);
   std::unique_ptr<RollingPlate> rolling_plate;
   try {
-    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt);
+    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt, substeps);
   } catch (const std::invalid_argument& error) {
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
@@ -316,7 +323,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
     write_greens_circumference(staged.staging(), plate, grid.circumferential);
-    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt);
+    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 
   const double mean_power = trace.input_power.mean();
@@ -348,6 +355,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["settings"] = {{"speed_m_per_s", settings.speed},
                          {"duration_s", settings.duration},
                          {"time_step_s", dt},
+                         {"substeps", substeps},
+                         {"band_top_hz", settings.band_top},
+                         {"contact_nyquist_hz", 0.5 / dt},
                          {"steps", steps},
                          {"static_load_N", settings.static_load},
                          {"history", to_string(settings.history)}};

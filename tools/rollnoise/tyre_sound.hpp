@@ -28,9 +28,10 @@ struct TyreSoundSettings {
 
 // [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
 // sidewall_rings, threads; [output] wav, audio_rate, wav_duration. The tyre's radius and width
-// (m) shape the radiating body. Bad values are InputErrors naming the key.
+// (m) shape the radiating body. `default_max_frequency` (Hz): max_frequency when the case does not
+// give it (the upper edge of the [rolling] band_top band). Bad values are InputErrors naming the key.
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
-                                           double width);
+                                           double width, double default_max_frequency = 5623.4);
 
 // Writes spectrum.csv, sound_power.csv, <receiver>.wav (and spb_passby.wav with an spb
 // receiver) and their plots into `dir`; returns the summary entries ("levels", "full_scale_pa",
