@@ -277,13 +277,15 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
   const Eigen::MatrixXd local = tread_compliance(model.tread, grid);
-  const double travel = settings.speed * settings.duration;
+  // The run has round(duration/Δt) steps, which can end up to half a step after `duration`:
+  // the road must reach the last step's position.
+  const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
+  const double travel = settings.speed * std::max(settings.duration, static_cast<double>(steps) * dt);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
       make_road_surface(road_table, grid.x(0), grid.x(grid.window - 1) + travel, 0.5 * grid.contact_width());
 
   StagedOutputDirectory staged(out);
-  const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
   const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history};
   const auto contact_started = std::chrono::steady_clock::now();
