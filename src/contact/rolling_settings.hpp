@@ -38,6 +38,9 @@ struct TyreRollingSettings {
   // The nominal centre of the highest third-octave band the run must carry (Hz); 0: one cell
   // per step, whatever band that gives. See substeps_for_band.
   double band_top = 5000.0;
+  // "cell_mean" (default): a contact point meets the road's mean over its cell's length;
+  // "point": the road at the point (before issue 10 §3). See TyreRunSettings.
+  int road_samples_per_cell = 8;
 };
 
 // The upper edge f_2 of the third-octave band nearest `band_top` (IEC 61260-1; 5623 Hz for the

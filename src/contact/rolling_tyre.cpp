@@ -117,6 +117,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the plate's sub-steps");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
+  if (settings.road_samples_per_cell < 1) throw std::invalid_argument("rolling tyre: road_samples_per_cell must be >= 1");
+  const int road_samples = settings.road_samples_per_cell;
+  const double sub_dx = grid.dx() / road_samples;
 
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
     throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
@@ -193,9 +196,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
     for (int j = 0; j < grid.lateral; ++j)
-      for (int i = 0; i < grid.window; ++i)
-        r(i + static_cast<Eigen::Index>(grid.window) * j) =
-            road.height(grid.x(i) + settings.speed * t, grid.y(j) - 0.5 * grid.width);
+      for (int i = 0; i < grid.window; ++i) {
+        const double x = grid.x(i) + settings.speed * t, y = grid.y(j) - 0.5 * grid.width;
+        double sum = 0.0;
+        for (int s = 0; s < road_samples; ++s) sum += road.height(x + (s + 0.5) * sub_dx - 0.5 * grid.dx(), y);
+        r(i + static_cast<Eigen::Index>(grid.window) * j) = sum / road_samples;
+      }
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

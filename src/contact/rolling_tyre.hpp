@@ -21,10 +21,17 @@ class RoadSurface;
 class ProgressReporter;
 
 struct TyreRunSettings {
-  double speed = 0.0;        // v, m/s (Δt = dx/v)
+  double speed = 0.0;        // v, m/s (Δt = dx/(p·v))
   double duration = 0.0;     // s
   double static_load = 0.0;  // W, N
   HistoryKind history = HistoryKind::automatic;
+  // The road height a contact point meets: the mean over its cell's length along the road,
+  // [x − dx/2, x + dx/2], by the midpoint rule with this many samples (1: the point value
+  // r(x) alone). The mean removes the texture's components at the cell's wavenumber 2π/dx and
+  // its harmonics (up to this count), which a window of points would otherwise turn into a
+  // modulation of the contact at the cell-passing frequency v/dx: hidden at p = 1 (it aliases
+  // to 0 Hz), but with p sub-steps it lands at v/dx, the Nyquist frequency for p = 2.
+  int road_samples_per_cell = 8;
 };
 
 struct TyreContactTrace {
