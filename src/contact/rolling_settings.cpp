@@ -49,7 +49,10 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   s.points_lateral = static_cast<int>(rolling.integer("points_lateral", 16, 1, 1024));
   s.contact_window = rolling.positive("contact_window", 0.2);
   s.band_top = rolling.non_negative("band_top", 5000.0);
-  s.road_samples_per_cell = rolling.choice("road_sampling", {"cell_mean", "point"}, "cell_mean") == "point" ? 1 : 8;
+  const std::string sampling = rolling.choice("road_sampling", {"lowpass", "cell_mean", "point"}, "lowpass");
+  s.road_sampling = sampling == "point" ? RoadSampling::point
+                    : sampling == "lowpass" ? RoadSampling::lowpass
+                                            : RoadSampling::cell_mean;
   if (s.band_top != 0.0 && (s.band_top < 100.0 || s.band_top > 20000.0))
     rolling.fail("band_top", "must be 0 (one cell per step) or a band centre from 100 to 20000 Hz");
   if (rolling.contains("time_step")) {

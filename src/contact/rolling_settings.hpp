@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contact/history_engine.hpp"
+#include "contact/rolling_tyre.hpp"
 #include "greens/discrete_kernel.hpp"
 
 namespace rollnoise {
@@ -38,9 +39,9 @@ struct TyreRollingSettings {
   // The nominal centre of the highest third-octave band the run must carry (Hz); 0: one cell
   // per step, whatever band that gives. See substeps_for_band.
   double band_top = 5000.0;
-  // "cell_mean" (default): a contact point meets the road's mean over its cell's length;
-  // "point": the road at the point (before issue 10 §3). See TyreRunSettings.
-  int road_samples_per_cell = 8;
+  // road_sampling = "lowpass" (default) | "cell_mean" | "point" (before issue 10 §3): how the
+  // contact points read texture finer than the cells (rolling_tyre.hpp, RoadSampling).
+  RoadSampling road_sampling = RoadSampling::lowpass;
 };
 
 // The upper edge f_2 of the third-octave band nearest `band_top` (IEC 61260-1; 5623 Hz for the

@@ -34,6 +34,44 @@ double power_per_metre(const TyreGrid& grid, const Eigen::VectorXd& force_now, c
   return sum / grid.dx();
 }
 
+// The taps of RoadSampling along x: offsets (m) and weights summing to 1.
+struct RoadFilter {
+  std::vector<double> offsets;
+  std::vector<double> weights;
+};
+
+RoadFilter make_road_filter(RoadSampling sampling, double dx) {
+  RoadFilter f;
+  switch (sampling) {
+    case RoadSampling::point:
+      f.offsets = {0.0};
+      f.weights = {1.0};
+      break;
+    case RoadSampling::cell_mean:
+      for (int s = 0; s < 8; ++s) {
+        f.offsets.push_back((s + 0.5) * dx / 8.0 - 0.5 * dx);
+        f.weights.push_back(1.0 / 8.0);
+      }
+      break;
+    case RoadSampling::lowpass: {
+      // The ideal low-pass at the wavenumber π/dx (λ = 2·dx), h(ξ) ∝ sinc(ξ/dx), under a
+      // Lanczos window sinc(ξ/(3dx)) over |ξ| < 3dx, sampled at dx/4; unit gain at λ → ∞.
+      const auto sinc = [](double z) { return z == 0.0 ? 1.0 : std::sin(M_PI * z) / (M_PI * z); };
+      double total = 0.0;
+      for (int s = -12; s <= 12; ++s) {
+        const double xi = s * dx / 4.0;
+        const double w = sinc(xi / dx) * sinc(xi / (3.0 * dx));
+        f.offsets.push_back(xi);
+        f.weights.push_back(w);
+        total += w;
+      }
+      for (double& w : f.weights) w /= total;
+      break;
+    }
+  }
+  return f;
+}
+
 }  // namespace
 
 namespace {
@@ -117,9 +155,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
     throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the plate's sub-steps");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
-  if (settings.road_samples_per_cell < 1) throw std::invalid_argument("rolling tyre: road_samples_per_cell must be >= 1");
-  const int road_samples = settings.road_samples_per_cell;
-  const double sub_dx = grid.dx() / road_samples;
+  const RoadFilter road_filter = make_road_filter(settings.road_sampling, grid.dx());
 
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
     throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
@@ -199,8 +235,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
       for (int i = 0; i < grid.window; ++i) {
         const double x = grid.x(i) + settings.speed * t, y = grid.y(j) - 0.5 * grid.width;
         double sum = 0.0;
-        for (int s = 0; s < road_samples; ++s) sum += road.height(x + (s + 0.5) * sub_dx - 0.5 * grid.dx(), y);
-        r(i + static_cast<Eigen::Index>(grid.window) * j) = sum / road_samples;
+        for (std::size_t s = 0; s < road_filter.offsets.size(); ++s)
+          sum += road_filter.weights[s] * road.height(x + road_filter.offsets[s], y);
+        r(i + static_cast<Eigen::Index>(grid.window) * j) = sum;
       }
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);

@@ -239,6 +239,49 @@ TEST(RollingTyre, SubStepsConverge) {
               error[0], error[1], error[2], error[3], swing);
 }
 
+// What the window's points read of a road finer than the cells (RoadSampling). A texture wave
+// one cell long (the cell-passing wavenumber 2π/dx, which with sub-steps would modulate the
+// contact at v/dx) is removed by the cell mean exactly and by the low-pass to −57 dB; a wave ten
+// cells long passes (cell mean sinc(π/10): −0.14 dB; low-pass within 0.01 dB); the point value
+// reads both as they are (with p = 2 it meets the cell wave at two phases, 0.3 and π + 0.3).
+TEST(RollingTyre, RoadSamplingRemovesWhatTheCellsCannotResolve) {
+  const KroppPlate plate(small_plate(0.1));
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2, amplitude = 1e-5;
+  const int p = 2;
+  const RollingPlate rolling(plate, grid, grid.dx() / (p * speed), p);
+  class Wave : public RoadSurface {
+   public:
+    Wave(double wavelength, double amplitude) : wavelength_(wavelength), amplitude_(amplitude) {}
+    std::string type() const override { return "wave"; }
+    double height(double x, double) const override { return amplitude_ * std::sin(2 * M_PI * x / wavelength_ + 0.3); }
+
+   private:
+    double wavelength_, amplitude_;
+  };
+  struct Expectation {
+    RoadSampling sampling;
+    double cell_wave_gain;  // largest |r| / amplitude for λ = dx
+    double long_wave_gain;  // for λ = 10 dx
+    double tolerance;
+  };
+  for (const Expectation& e : {Expectation{RoadSampling::point, std::sin(0.3), 1.0, 0.01},
+                               Expectation{RoadSampling::cell_mean, 0.0, std::sin(M_PI / 10) / (M_PI / 10), 0.01},
+                               Expectation{RoadSampling::lowpass, 0.0, 1.0, 0.01}}) {
+    TyreRunSettings settings{speed, 40 * grid.dx() / speed, 1500.0, HistoryKind::modal, e.sampling};
+    const TyreContactTrace cell = simulate_rolling_tyre(rolling, tread(grid), Wave(grid.dx(), amplitude), settings);
+    const TyreContactTrace long_wave = simulate_rolling_tyre(rolling, tread(grid), Wave(10 * grid.dx(), amplitude), settings);
+    const double cell_gain = cell.road.cwiseAbs().maxCoeff() / amplitude;
+    const double long_gain = long_wave.road.cwiseAbs().maxCoeff() / amplitude;
+    if (e.cell_wave_gain == 0.0) {
+      EXPECT_LE(cell_gain, e.sampling == RoadSampling::cell_mean ? 1e-12 : 2e-3) << static_cast<int>(e.sampling);
+    } else {
+      EXPECT_NEAR(cell_gain, e.cell_wave_gain, e.tolerance) << static_cast<int>(e.sampling);
+    }
+    EXPECT_NEAR(long_gain, e.long_wave_gain, e.tolerance) << static_cast<int>(e.sampling);
+  }
+}
+
 TEST(RollingTyre, DampingMakesThePressureLeanForwardAndCostsRollingResistance) {
   const TyreGrid grid = small_grid();
   const double speed = 22.2;

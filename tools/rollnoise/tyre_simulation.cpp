@@ -283,13 +283,13 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const double travel = settings.speed * std::max(settings.duration, static_cast<double>(steps) * dt);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
-      make_road_surface(road_table, grid.x(0) - 0.5 * grid.dx(), grid.x(grid.window - 1) + 0.5 * grid.dx() + travel,
+      make_road_surface(road_table, grid.x(0) - 3.0 * grid.dx(), grid.x(grid.window - 1) + 3.0 * grid.dx() + travel,
                         0.5 * grid.contact_width());
 
   StagedOutputDirectory staged(out);
   ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
   const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
-                            settings.road_samples_per_cell};
+                            settings.road_sampling};
   const auto contact_started = std::chrono::steady_clock::now();
   std::unique_ptr<NonlinearTread> springs;
   if (model.tread.type == TreadSettings::Type::nonlinear) {
@@ -360,7 +360,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"duration_s", settings.duration},
                          {"time_step_s", dt},
                          {"substeps", substeps},
-                         {"road_sampling", settings.road_samples_per_cell > 1 ? "cell_mean" : "point"},
+                         {"road_sampling", settings.road_sampling == RoadSampling::point       ? "point"
+                                           : settings.road_sampling == RoadSampling::lowpass ? "lowpass"
+                                                                                             : "cell_mean"},
                          {"band_top_hz", settings.band_top},
                          {"contact_nyquist_hz", 0.5 / dt},
                          {"steps", steps},
