@@ -56,8 +56,8 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   if (s.band_top != 0.0 && (s.band_top < 100.0 || s.band_top > 20000.0))
     rolling.fail("band_top", "must be 0 (one cell per step) or a band centre from 100 to 20000 Hz");
   if (rolling.contains("time_step")) {
-    rolling.fail("time_step", "is derived for a tyre (Δt = 2πR/points_circumferential/speed/p, p the sub-steps "
-                              "that band_top needs); remove it");
+    rolling.fail("time_step", "is derived from the grid for a tyre (Δt = 2πR/points_circumferential/speed/p, p the "
+                              "sub-steps that band_top needs); remove it");
   }
   if (rolling.contains("discretisation") && rolling.text("discretisation") != "step") {
     rolling.fail("discretisation", "only \"step\" is available for a tyre (its modes recur exactly on it)");
