@@ -9,14 +9,16 @@
 
 namespace rollnoise {
 
-RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step)
+RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step, int substeps)
     : plate_(plate),
       grid_(grid),
       time_step_(time_step),
+      substeps_(substeps),
       orders_(plate.parameters().circumferential_modes),
       lateral_modes_(plate.parameters().lateral_modes),
       modal_mass_(plate.modal_mass()) {
   grid_.validate();
+  if (substeps_ < 1) throw std::invalid_argument("rolling plate: substeps must be >= 1");
   if (std::abs(plate.circumference() - grid_.circumference()) > 1e-12 * grid_.circumference())
     throw std::invalid_argument("the plate and the grid have different radii");
   if (orders_ > grid_.circumferential / 2) {
@@ -41,8 +43,8 @@ RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double
 }
 
 double RollingPlate::passing_rate(int m) const {
-  // k_m·v with v = dx/Δt: order m turns by 2πm/Nθ per step.
-  return 2.0 * std::numbers::pi * m / (grid_.circumferential * time_step_);
+  // k_m·v with v = dx/(p·Δt): order m turns by 2πm/(p·Nθ) per step.
+  return 2.0 * std::numbers::pi * m / (grid_.circumferential * substeps_ * time_step_);
 }
 
 void RollingPlate::add_modal_sum(const std::vector<std::complex<double>>& coefficients,

@@ -18,6 +18,19 @@
 // Σ_k c Φ̃^k Γ̃ = ∫_0^∞ e^{iωτ} h = α(−ω): the compliance of steady rolling, non-symmetric when
 // the belt is damped (the pressure leans forward: rolling resistance). G_fixed[0] is slightly
 // non-symmetric too: within one step the material moves by one cell.
+//
+// Sub-steps (issue 10 §3). With p sub-steps per cell, Δt = dx/(p·v): the material moves by dx/p
+// per step, a fraction of a cell. Nothing above needs whole cells: the window's points stay at
+// their fixed positions x_i (grid positions around the axle), the forces act there, and every
+// mode carries the exact phase e^{i k_m v τ} of the material passing under them, ω_m = k_m·v =
+// 2πm/(Nθ·p·Δt). The state of each mode is held in the fixed frame (its amplitude at fixed
+// positions), so a fractional shift is only a phase: the recursion, the closed-form step
+// integrals and the all-lag total are exact for any p. What p changes is the time step, so the
+// highest frequency the contact steps carry (1/(2Δt) = p·v/(2·dx)); the spatial grid, and with it
+// the shortest force pattern and texture wavelength seen across the window (2·dx), does not.
+// Because the window's points are fixed and the texture (and the tread stuck to it) moves past
+// them, the contact's nonlinearity modulates the forces at the cell-passing frequency v/dx, which
+// sub-steps bring into the band (at p = 1 it aliases to 0 Hz): README, "The band up to 5 kHz".
 #include <complex>
 #include <vector>
 
@@ -34,11 +47,14 @@ class RollingPlate {
  public:
   // Throws std::invalid_argument when the plate has more circumferential orders than the grid
   // can represent (M > Nθ/2).
-  RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step);
+  // `substeps` p ≥ 1: the tyre advances one cell every p steps (v = dx/(p·time_step)).
+  RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step, int substeps = 1);
 
   const TyreGrid& grid() const noexcept { return grid_; }
   const KroppPlate& plate() const noexcept { return plate_; }
   double time_step() const noexcept { return time_step_; }
+  int substeps() const noexcept { return substeps_; }
+  double speed() const noexcept { return grid_.dx() / (substeps_ * time_step_); }  // v, m/s
   int orders() const noexcept { return orders_; }      // m = 0 … M
   int lateral_modes() const noexcept { return lateral_modes_; }  // n = 1 … N
   double modal_mass() const noexcept { return modal_mass_; }
@@ -70,6 +86,7 @@ class RollingPlate {
   const KroppPlate& plate_;
   TyreGrid grid_;
   double time_step_;
+  int substeps_;
   int orders_;
   int lateral_modes_;
   double modal_mass_;

@@ -1,5 +1,6 @@
 #include "contact/rolling_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/config_table.hpp"
@@ -47,8 +48,16 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");
   s.points_lateral = static_cast<int>(rolling.integer("points_lateral", 16, 1, 1024));
   s.contact_window = rolling.positive("contact_window", 0.2);
+  s.band_top = rolling.non_negative("band_top", 5000.0);
+  const std::string sampling = rolling.choice("road_sampling", {"lowpass", "cell_mean", "point"}, "lowpass");
+  s.road_sampling = sampling == "point" ? RoadSampling::point
+                    : sampling == "lowpass" ? RoadSampling::lowpass
+                                            : RoadSampling::cell_mean;
+  if (s.band_top != 0.0 && (s.band_top < 100.0 || s.band_top > 20000.0))
+    rolling.fail("band_top", "must be 0 (one cell per step) or a band centre from 100 to 20000 Hz");
   if (rolling.contains("time_step")) {
-    rolling.fail("time_step", "is derived from the grid for a tyre (Δt = 2πR/points_circumferential/speed); remove it");
+    rolling.fail("time_step", "is derived from the grid for a tyre (Δt = 2πR/points_circumferential/speed/p, p the "
+                              "sub-steps that band_top needs); remove it");
   }
   if (rolling.contains("discretisation") && rolling.text("discretisation") != "step") {
     rolling.fail("discretisation", "only \"step\" is available for a tyre (its modes recur exactly on it)");
@@ -58,6 +67,20 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
     rolling.fail("duration", "speed × duration (the length of road rolled over, m) must be a finite number");
   }
   return s;
+}
+
+double band_top_edge(double band_top) {
+  // IEC 61260-1 third octaves (the formulas of acoustics/fractional_octave_bands.hpp, written out
+  // here so that contact does not reach down the pipeline): f_m = 1000·10^(x/10), f_2 = f_m·10^(1/20).
+  const double x = std::round(10.0 * std::log10(band_top / 1000.0));
+  return 1000.0 * std::pow(10.0, x / 10.0) * std::pow(10.0, 1.0 / 20.0);
+}
+
+int substeps_for_band(double band_top, double dx, double speed) {
+  if (band_top <= 0.0) return 1;
+  // 0.99·p·v/(2·dx) ≥ f_2; the small allowance keeps an exact fit from rounding up.
+  const double needed = 2.0 * band_top_edge(band_top) * dx / (0.99 * speed);
+  return std::max(1, static_cast<int>(std::ceil(needed * (1.0 - 1e-12))));
 }
 
 }  // namespace rollnoise

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contact/history_engine.hpp"
+#include "contact/rolling_tyre.hpp"
 #include "greens/discrete_kernel.hpp"
 
 namespace rollnoise {
@@ -25,7 +26,8 @@ struct RollingSettings {
 // Reads and validates [rolling] for a point model; unknown keys are rejected.
 RollingSettings read_rolling_settings(const ConfigTable& rolling);
 
-// [rolling] for a tyre: the time step follows from the grid (Δt = dx/v), so it is not a key.
+// [rolling] for a tyre: the time step follows from the grid and the band (Δt = dx/(p·v), p
+// sub-steps per cell), so it is not a key.
 struct TyreRollingSettings {
   double speed = 0.0;             // m/s
   double duration = 0.0;          // s
@@ -34,7 +36,22 @@ struct TyreRollingSettings {
   int points_circumferential = 512;
   int points_lateral = 16;
   double contact_window = 0.2;    // m, length of the fixed window around the bottom
+  // The nominal centre of the highest third-octave band the run must carry (Hz); 0: one cell
+  // per step, whatever band that gives. See substeps_for_band.
+  double band_top = 5000.0;
+  // road_sampling = "lowpass" (default) | "cell_mean" | "point" (before issue 10 §3): how the
+  // contact points read texture finer than the cells (rolling_tyre.hpp, RoadSampling).
+  RoadSampling road_sampling = RoadSampling::lowpass;
 };
+
+// The upper edge f_2 of the third-octave band nearest `band_top` (IEC 61260-1; 5623 Hz for the
+// 5 kHz band).
+double band_top_edge(double band_top);
+// Sub-steps per cell p for a tyre grid of spacing dx rolling at v so that the contact steps carry
+// the whole band_top band: the radiation stage computes up to 0.99 of the Nyquist frequency
+// 1/(2Δt), so p is the least integer ≥ 1 with 0.99·p·v/(2·dx) ≥ band_top_edge(band_top).
+// band_top = 0: p = 1.
+int substeps_for_band(double band_top, double dx, double speed);
 TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling);
 
 }  // namespace rollnoise

@@ -34,6 +34,44 @@ double power_per_metre(const TyreGrid& grid, const Eigen::VectorXd& force_now, c
   return sum / grid.dx();
 }
 
+// The taps of RoadSampling along x: offsets (m) and weights summing to 1.
+struct RoadFilter {
+  std::vector<double> offsets;
+  std::vector<double> weights;
+};
+
+RoadFilter make_road_filter(RoadSampling sampling, double dx) {
+  RoadFilter f;
+  switch (sampling) {
+    case RoadSampling::point:
+      f.offsets = {0.0};
+      f.weights = {1.0};
+      break;
+    case RoadSampling::cell_mean:
+      for (int s = 0; s < 8; ++s) {
+        f.offsets.push_back((s + 0.5) * dx / 8.0 - 0.5 * dx);
+        f.weights.push_back(1.0 / 8.0);
+      }
+      break;
+    case RoadSampling::lowpass: {
+      // The ideal low-pass at the wavenumber π/dx (λ = 2·dx), h(ξ) ∝ sinc(ξ/dx), under a
+      // Lanczos window sinc(ξ/(3dx)) over |ξ| < 3dx, sampled at dx/4; unit gain at λ → ∞.
+      const auto sinc = [](double z) { return z == 0.0 ? 1.0 : std::sin(M_PI * z) / (M_PI * z); };
+      double total = 0.0;
+      for (int s = -12; s <= 12; ++s) {
+        const double xi = s * dx / 4.0;
+        const double w = sinc(xi / dx) * sinc(xi / (3.0 * dx));
+        f.offsets.push_back(xi);
+        f.weights.push_back(w);
+        total += w;
+      }
+      for (double& w : f.weights) w /= total;
+      break;
+    }
+  }
+  return f;
+}
+
 }  // namespace
 
 namespace {
@@ -112,10 +150,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const TyreGrid& grid = plate.grid();
   const Eigen::Index points = grid.points();
   const double dt = plate.time_step();
-  if (std::abs(dt * settings.speed - grid.dx()) > 1e-9 * grid.dx())
-    throw std::invalid_argument("rolling tyre: the time step must be dx/v");
+  const int substeps = plate.substeps();
+  if (std::abs(dt * substeps * settings.speed - grid.dx()) > 1e-9 * grid.dx())
+    throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the plate's sub-steps");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
+  const RoadFilter road_filter = make_road_filter(settings.road_sampling, grid.dx());
 
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
     throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
@@ -174,6 +214,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd u0(points), r(points), q(points), position(points), deformation(points);
   Eigen::VectorXd previous_force = steady.force;
+  // The work of the forces is taken over one cell of travel, i.e. against the state p steps
+  // back (p sub-steps per cell), and spread over those p steps: a ring of the last p states,
+  // starting in steady rolling.
+  std::vector<Eigen::VectorXd> force_ring(static_cast<std::size_t>(substeps), steady.force);
+  std::vector<Eigen::VectorXd> deformation_ring(static_cast<std::size_t>(substeps), steady.deformation);
   // Window point (i, j) → (i − 1, j); the last column's points leave.
   std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
   for (int j = 0; j < grid.lateral; ++j)
@@ -181,23 +226,26 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
       const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
       shift_back[static_cast<std::size_t>(p)] = p - 1;
     }
-  Eigen::VectorXd previous_deformation = steady.deformation;
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
   const auto loop_started = std::chrono::steady_clock::now();
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
     for (int j = 0; j < grid.lateral; ++j)
-      for (int i = 0; i < grid.window; ++i)
-        r(i + static_cast<Eigen::Index>(grid.window) * j) =
-            road.height(grid.x(i) + settings.speed * t, grid.y(j) - 0.5 * grid.width);
+      for (int i = 0; i < grid.window; ++i) {
+        const double x = grid.x(i) + settings.speed * t, y = grid.y(j) - 0.5 * grid.width;
+        double sum = 0.0;
+        for (std::size_t s = 0; s < road_filter.offsets.size(); ++s)
+          sum += road_filter.weights[s] * road.height(x + road_filter.offsets[s], y);
+        r(i + static_cast<Eigen::Index>(grid.window) * j) = sum;
+      }
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
-    // The road moves one cell towards −x per step, and the contacts on its texture with it;
-    // the patch outline stays. Of the last active set, as it is or shifted by one cell, take
+    // The road moves one cell towards −x per cell of travel (every p steps), and the contacts
+    // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
     if (n > 0 && lcp) {
@@ -245,10 +293,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::M
                                " s: lengthen [rolling] contact_window");
       edge_warned = true;
     }
-    trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, previous_force,
-                                                              previous_deformation);
+    const auto ring = static_cast<std::size_t>(n % static_cast<std::size_t>(substeps));
+    trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, force_ring[ring],
+                                                              deformation_ring[ring]);
+    force_ring[ring] = force;
+    deformation_ring[ring] = deformation;
     previous_force = force;
-    previous_deformation = deformation;
     trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->iterations();
     clock = std::chrono::steady_clock::now();
     engine->advance(force);

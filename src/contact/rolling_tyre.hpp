@@ -20,11 +20,33 @@ namespace rollnoise {
 class RoadSurface;
 class ProgressReporter;
 
+// How the window's points read a road whose texture is finer than the cells (issue 10 §3). The
+// points are dx apart, so texture shorter than 2·dx aliases across the window: its components at
+// the cell's wavenumber 2π/dx and its harmonics modulate the contact at the cell-passing
+// frequency v/dx (hidden at p = 1, where it aliases to 0 Hz, but the Nyquist frequency for p = 2
+// sub-steps), and the rest (λ between dx and 2·dx) reaches the total force as a long wave that
+// the patch does not average out.
+//  - point: r(x) (before issue 10 §3);
+//  - cell_mean: the mean over [x − dx/2, x + dx/2] (midpoint rule, 8 samples): removes the
+//    components at 2π/dx and its harmonics; gain sinc(π·dx/λ): −0.4 dB at λ = 5·dx, −3.9 dB at
+//    2·dx, −18 dB at 1.13·dx;
+//  - lowpass (default): a Lanczos-windowed sinc (3 lobes, cut-off at λ = 2·dx, 4 samples per
+//    cell over ±3 cells, unit gain at λ → ∞): −1.4 dB at λ = 2.56·dx, −0.7 dB at 2.84·dx, 0 from
+//    3.6·dx; −6 dB at 2·dx; −26 dB at 1.5·dx, −40 to −57 dB from 1.42·dx to dx. What the points
+//    cannot resolve is removed instead of aliased.
+// Neither removes the modulation at v/dx that the contact's own nonlinearity makes as texture
+// features pass the fixed points (README, "The band up to 5 kHz").
+enum class RoadSampling { point, cell_mean, lowpass };
+
 struct TyreRunSettings {
-  double speed = 0.0;        // v, m/s (Δt = dx/v)
+  double speed = 0.0;        // v, m/s (Δt = dx/(p·v))
   double duration = 0.0;     // s
   double static_load = 0.0;  // W, N
   HistoryKind history = HistoryKind::automatic;
+  // The road height a contact point meets (RoadSampling): the road low-passed along x at the
+  // wavelength 2·dx that the window's points resolve, the mean over its cell's length along the
+  // road [x − dx/2, x + dx/2], or the point value r(x).
+  RoadSampling road_sampling = RoadSampling::lowpass;
 };
 
 struct TyreContactTrace {

@@ -341,6 +341,45 @@ TEST(SimulateCli, PlateTyreBadSoundSettingsAreNamed) {
   EXPECT_TRUE(contains(r.err, "plate")) << r.err;
 }
 
+// Issue 10 §3: by default a tyre run carries the third octaves up to 5 kHz at any speed. At
+// 30 km/h on 512 cells that takes p = 6 sub-steps per cell (Nyquist 6.45 kHz), the radiated band
+// ends at the 5 kHz band's upper edge (5623 Hz), and spectrum.csv and budget.csv end at 5 kHz.
+TEST(SimulateCli, PlateTyreCarriesTheBandTo5kHzAt30kmh) {
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  std::string text = project_case("plate_rough_80kmh.toml");
+  // The project case states max_frequency; leave it to the default here.
+  const auto at = text.find("max_frequency = ");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at, text.find('\n', at) - at);
+  ws.write("tyre.toml", edit_case(text, {{"tyre", "file", "\"" + model + "\""}, rough_surface(),
+                                         {"rolling", "speed", "8.3333"},
+                                         {"rolling", "duration", "0.02"},
+                                         {"radiation", "mesh_around", "32"},
+                                         {"radiation", "mesh_across", "2"},
+                                         {"radiation", "sidewall_rings", "4"},
+                                         {"radiation", "anchor_spacing", "500"},
+                                         {"radiation", "contact_refinement", "3"},
+                                         {"output", "plots", "false"}}));
+  const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const fs::path out = ws.path("tyre");
+  const nlohmann::json summary = read_json(out / "summary.json");
+  EXPECT_EQ(summary["settings"]["substeps"].get<int>(), 6) << summary["settings"].dump();
+  EXPECT_EQ(summary["settings"]["road_sampling"].get<std::string>(), "lowpass");
+  EXPECT_NEAR(summary["settings"]["contact_nyquist_hz"].get<double>(), 6446.8, 1.0);
+  EXPECT_NEAR(summary["radiation"]["band_hz"][1].get<double>(), 5623.4, 0.1);
+  std::string last_front, last_budget, line;
+  std::ifstream spectrum(out / "spectrum.csv");
+  while (std::getline(spectrum, line))
+    if (line.rfind("cpx_front,", 0) == 0) last_front = line.substr(10, line.find(',', 10) - 10);
+  EXPECT_EQ(last_front, "5000");
+  std::ifstream budget(out / "budget.csv");
+  std::getline(budget, line);
+  while (std::getline(budget, line)) last_budget = line.substr(0, line.find(','));
+  EXPECT_EQ(last_budget, "5000");
+}
+
 TEST(SimulateCli, PlateTyreRejectsAGivenTimeStep) {
   Workspace ws;
   const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();

@@ -54,6 +54,63 @@ TEST(TyreRadiation, MeshReproducesAKnownExteriorField) {
   }
 }
 
+// Issue 10 §3: the band up to 5 kHz, on the mesh a run uses by default (tyre_sound.cpp: graded
+// to 2 mm at the contact, 96 around, 16 across, 12 sidewall rings; 2948 points). The exterior
+// field of a monopole inside the tread near the contact, where the belt moves most and the horn
+// is, at the CPX and SPB receivers (205/55 R16: 0.18 m wide), at 5 kHz and at the 5 kHz band's
+// upper edge (5623 Hz, the top of the radiated band), within the issue's 6 %. Measured (with a
+// second source off the centre plane): 0.3–5.6 % at 5 kHz, 0.3–5.7 % at 5623 Hz.
+// Sources far from the contact are not resolved to 6 % at these frequencies, and they are
+// recorded, not asserted: near the axle 7–25 %, 3 cm inside the tread 60° ahead 0.5–30 %
+// (README, "Validation of the radiation"; a finer mesh, 128 × 16 × 20, brings them to
+// 0.2–17 % at three to five times the solve time).
+TEST(TyreRadiation, RunMeshReproducesNearContactFieldsAt5kHz) {
+  TyreSurfaceMeshSpec spec;
+  spec.radius = 0.316;
+  spec.width = 0.18;
+  spec.around = 96;
+  spec.across = 16;
+  spec.sidewall_rings = 12;
+  spec.contact_refinement = 10.0;
+  const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
+  const EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true);
+  const double beside = 0.5 * spec.width + 0.2;
+  Eigen::Matrix3Xd receivers(3, 3);
+  receivers << 0.2, -0.2, 0.0,  // cpx_front, cpx_rear, spb
+      beside, beside, 7.5,      //
+      0.1, 0.1, 1.2;
+  struct Source {
+    const char* name;
+    Eigen::Vector3d position;
+    bool asserted;
+  };
+  const Source sources[] = {{"near_contact", {0.03, 0.0, 0.012}, true},
+                            {"near_contact_off_centre", {-0.02, 0.05, 0.015}, true},
+                            {"near_axle", {0.05, 0.02, 0.3}, false},
+                            {"tread_ahead", {0.248, 0.03, 0.175}, false}};
+  for (double f : {5000.0, 5623.4}) {
+    const double omega = 2 * kPi * f;
+    const double k = omega / Medium{}.sound_speed;
+    const Eigen::MatrixXcd transfer = model.transfer(omega, receivers);
+    for (const Source& source : sources) {
+      Eigen::VectorXcd v(mesh.points.cols());
+      for (Eigen::Index m = 0; m < v.size(); ++m)
+        v(m) = -mesh.normals.col(m).cast<Complex>().dot(helmholtz_green_gradient(mesh.points.col(m), source.position, k, true));
+      const Eigen::VectorXcd p = transfer * v;
+      for (Eigen::Index r = 0; r < receivers.cols(); ++r) {
+        const Complex expected = monopole_over_road(receivers.col(r), source.position, omega, 1.0);
+        const double error = std::abs(p(r) - expected) / std::abs(expected);
+        if (source.asserted) {
+          EXPECT_LE(error, 0.06) << source.name << ", f = " << f << ", receiver " << r;
+        }
+        RecordProperty(std::string(source.name) + "_" + std::to_string(static_cast<int>(f)) + "Hz_r" + std::to_string(r),
+                       std::to_string(error));
+        std::printf("%s, %.0f Hz, receiver %ld: %.4f\n", source.name, f, static_cast<long>(r), error);
+      }
+    }
+  }
+}
+
 // For the recorded errors (std::to_string's fixed format shows them as 0).
 std::string scientific(double x) {
   char text[32];

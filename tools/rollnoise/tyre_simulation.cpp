@@ -86,6 +86,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   h5.attribute("/", "speed_m_per_s", speed);
   h5.attribute("/", "static_load_N", load);
   h5.attribute("/", "time_step_s", plate.time_step());
+  h5.attribute("/", "substeps_per_cell", plate.substeps());
   h5.attribute("/", "radius_m", grid.radius);
   h5.attribute("/", "belt_width_m", grid.width);
   h5.write("/time", t.time, "s", "time of each sample; t = 0 is the start of the run in steady rolling");
@@ -155,9 +156,10 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
     displacement->append(slice.data());
     slice = v.cast<float>();
     velocity->append(slice.data());
-    // Material that starts at the top (g = Nθ/2) moves one cell towards −x per step.
-    if (n < static_cast<std::size_t>(around)) {
-      const int g = ((around / 2 - static_cast<int>(n)) % around + around) % around;
+    // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
+    const auto substeps = static_cast<std::size_t>(plate.substeps());
+    if (n % substeps == 0 && n / substeps < static_cast<std::size_t>(around)) {
+      const int g = ((around / 2 - static_cast<int>(n / substeps)) % around + around) % around;
       revolution.push_back(u(across / 2, g));
     }
   }
@@ -245,8 +247,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
+  // The radiated band reaches the upper edge of the band_top band (5623 Hz for 5 kHz) unless
+  // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
-      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width);
+      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width,
+                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
 
   TyreGrid grid;
@@ -263,25 +268,29 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
     throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
   }
   const KroppPlate plate(model.plate);
-  const double dt = grid.dx() / settings.speed;
+  // Sub-steps per cell so that the contact steps carry the band_top band (rolling_settings.hpp).
+  const int substeps = substeps_for_band(settings.band_top, grid.dx(), settings.speed);
+  const double dt = grid.dx() / (substeps * settings.speed);
   std::unique_ptr<RollingPlate> rolling_plate;
   try {
-    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt);
+    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt, substeps);
   } catch (const std::invalid_argument& error) {
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
   const Eigen::MatrixXd local = tread_compliance(model.tread, grid);
-  // The run samples t = n·dt for n = 0 … steps (rolling_tyre.cpp), so the road must reach the
-  // last of those, which may lie up to half a step beyond the duration.
+  // The run samples t = n·dt for n = 0 … steps (rolling_tyre.cpp), which can end up to half a
+  // step after `duration`: the road must reach the last step's position.
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const double travel = settings.speed * dt * static_cast<double>(steps);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
-      make_road_surface(road_table, grid.x(0), grid.x(grid.window - 1) + travel, 0.5 * grid.contact_width());
+      make_road_surface(road_table, grid.x(0) - 3.0 * grid.dx(), grid.x(grid.window - 1) + 3.0 * grid.dx() + travel,
+                        0.5 * grid.contact_width());
 
   StagedOutputDirectory staged(out);
   ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
-  const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history};
+  const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
+                            settings.road_sampling};
   const auto contact_started = std::chrono::steady_clock::now();
   std::unique_ptr<NonlinearTread> springs;
   if (model.tread.type == TreadSettings::Type::nonlinear) {
@@ -343,7 +352,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
     write_greens_circumference(staged.staging(), plate, grid.circumferential);
-    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt);
+    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 
   const double mean_power = trace.input_power.mean();
@@ -375,6 +384,12 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["settings"] = {{"speed_m_per_s", settings.speed},
                          {"duration_s", settings.duration},
                          {"time_step_s", dt},
+                         {"substeps", substeps},
+                         {"road_sampling", settings.road_sampling == RoadSampling::point       ? "point"
+                                           : settings.road_sampling == RoadSampling::lowpass ? "lowpass"
+                                                                                             : "cell_mean"},
+                         {"band_top_hz", settings.band_top},
+                         {"contact_nyquist_hz", 0.5 / dt},
                          {"steps", steps},
                          {"static_load_N", settings.static_load},
                          {"history", to_string(settings.history)}};

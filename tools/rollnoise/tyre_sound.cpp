@@ -66,13 +66,13 @@ nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound
 }  // namespace
 
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
-                                           double width) {
+                                           double width, double default_max_frequency) {
   TyreSoundSettings s;
   s.enabled = radiation.boolean("enabled", true);
   s.receivers = read_receivers(radiation, width);
   s.radiation.mesh.radius = radius;
   s.radiation.mesh.width = width;
-  s.radiation.max_frequency_hz = radiation.between("max_frequency", 20.0, 20000.0, 3000.0);
+  s.radiation.max_frequency_hz = radiation.between("max_frequency", 20.0, 20000.0, default_max_frequency);
   s.radiation.anchor_spacing_hz = radiation.between("anchor_spacing", 4.999, 1000.001, 100.0);
   // The default mesh resolves the horn between tread and road (tests/radiation/test_horn_effect.cpp):
   // 2 mm cells at the contact growing to 2.1 cm, 16 rows across (1.1 cm), 12 rings per sidewall.
