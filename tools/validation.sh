@@ -18,7 +18,8 @@ force=0
 [[ "${1:-}" == "--force" ]] && force=1
 mkdir -p "$out"
 case=models/cases/plate_rough_80kmh.toml
-surfaces=(dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined)
+# VALIDATION_SURFACES="dac11 sma11 ..." runs a subset at 80 km/h.
+read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined}"
 
 run() {  # surface speed_kmh
   local dir="$out/$1_$2kmh"

@@ -188,6 +188,7 @@ TEST(SimulateCli, GeneratedRoadReachesTheLastStepOfARunThatRoundsUp) {
                                    {"road", "length", "0.01"},
                                    {"rolling", "speed", std::to_string(speed)},
                                    {"rolling", "duration", std::to_string(20.51 * dt)},
+                                   {"rolling", "band_top", "0"},  // one step per cell
                                    {"radiation", "enabled", "false"}}));
   const RunResult r = ws.run({"simulate", "tyre.toml", "--out", "tyre"});
   ASSERT_EQ(r.status, 0) << describe(r);
