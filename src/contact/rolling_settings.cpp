@@ -48,7 +48,9 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");
   s.points_lateral = static_cast<int>(rolling.integer("points_lateral", 16, 1, 1024));
   s.contact_window = rolling.positive("contact_window", 0.2);
-  s.band_top = rolling.non_negative("band_top", 5000.0);
+  // 0 (one step per cell) by default: the sub-steps that carry the bands to 5 kHz bring the
+  // contact's cell-passing artefact into the bands above 0.5·v/dx (rolling_settings.hpp).
+  s.band_top = rolling.non_negative("band_top", 0.0);
   const std::string sampling = rolling.choice("road_sampling", {"lowpass", "cell_mean", "point"}, "lowpass");
   s.road_sampling = sampling == "point" ? RoadSampling::point
                     : sampling == "lowpass" ? RoadSampling::lowpass
