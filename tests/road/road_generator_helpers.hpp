@@ -16,6 +16,7 @@
 #include "road/road_profile.hpp"
 #include "road/road_surface.hpp"
 #include "road/texture_spectrum.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise::test {
 
@@ -86,5 +87,3 @@ inline double skewness(std::span<const double> z) {
 
 }  // namespace rollnoise::test
 
-#define EXPECT_MENTIONS(message, part) \
-  EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)

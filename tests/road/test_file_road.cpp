@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "road/file_road.hpp"
 #include "road/profile_cleaning.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
@@ -19,21 +20,7 @@ namespace fs = std::filesystem;
 
 class FileRoadTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device device;
-    dir_ = fs::temp_directory_path() /
-           ("rollnoise_test_file_road_" + std::to_string(device()) + std::to_string(device()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
+  fs::path write(const std::string& name, const std::string& text) const { return temp_.write(name, text); }
   // The InputError message of building a FileRoad from `path`, or "" if none was thrown.
   static std::string error_of(const fs::path& path, double x_min, double x_max) {
     try {
@@ -44,7 +31,8 @@ class FileRoadTest : public ::testing::Test {
     return "";
   }
 
-  fs::path dir_;
+  test::TempFolder temp_{"rollnoise_test_file_road_"};
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(FileRoadTest, LinearDataIsInterpolatedExactly) {

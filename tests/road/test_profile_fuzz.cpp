@@ -20,6 +20,7 @@
 #include "road/height_map_hdf5.hpp"
 #include "road/profile_csv.hpp"
 #include "road/profile_file.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
@@ -154,15 +155,6 @@ TEST(ProfileCsvFuzz, RandomAndMutatedInputsReturnOrThrowInputError) {
 
 class HeightMapHdf5Fuzz : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device device;
-    dir_ = fs::temp_directory_path() / ("rollnoise_test_hdf5_fuzz_" + std::to_string(device()) + std::to_string(device()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
   Outcome read_checked(const std::string& bytes, std::string& problem) const {
     const fs::path path = dir_ / "fuzz.h5";
     {
@@ -171,7 +163,8 @@ class HeightMapHdf5Fuzz : public ::testing::Test {
     }
     return fuzz::classify(path.string(), [&] { return check_grid(read_height_map_hdf5(path)); }, problem);
   }
-  fs::path dir_;
+  test::TempFolder temp_{"rollnoise_test_hdf5_fuzz_"};
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(HeightMapHdf5Fuzz, CorpusFilesBehaveAsNamed) {

@@ -25,31 +25,17 @@
 #include "road/profile_csv.hpp"
 #include "road/profile_file.hpp"
 #include "road/profile_format.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
 
 namespace fs = std::filesystem;
 
-#define EXPECT_MENTIONS(message, part) \
-  EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
 
 class ProfileIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device device;
-    dir_ = fs::temp_directory_path() / ("rollnoise_test_profile_io_" + std::to_string(device()) + std::to_string(device()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
+  fs::path write(const std::string& name, const std::string& text) const { return temp_.write(name, text); }
   // An HDF5 height map with z = f(x, y); units per dataset, values written in those units.
   fs::path write_h5(const std::string& name, const std::vector<double>& x, const std::vector<double>& y,
                     double (*f)(double, double), const std::string& xy_units = "m",
@@ -81,7 +67,8 @@ class ProfileIo : public ::testing::Test {
     return "";
   }
 
-  fs::path dir_;
+  test::TempFolder temp_{"rollnoise_test_profile_io_"};
+  const fs::path dir_ = temp_.path();
 };
 
 // A known profile: z(x) = 1e-3 sin(40 x) + 2e-4 x on x = 0 .. 0.999 step 1 mm.

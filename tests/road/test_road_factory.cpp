@@ -15,6 +15,7 @@
 #include "road/random_road.hpp"
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
@@ -39,8 +40,6 @@ std::string error_of(const std::string& text, double x_max = 10.0) {
   return "";
 }
 
-#define EXPECT_MENTIONS(message, part) \
-  EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
 
 TEST(RoadFactory, UnknownTypeListsAllowedValues) {
   const std::string message = error_of("[road]\ntype = \"cobbles\"\n");

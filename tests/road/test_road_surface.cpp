@@ -30,14 +30,13 @@
 #include "road/random_surface.hpp"
 #include "road/road_profile.hpp"
 #include "road/road_surface.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
 
 namespace fs = std::filesystem;
 
-#define EXPECT_MENTIONS(message, part) \
-  EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
 
 // A temporary folder, removed at the end of the test.
 class TempDir {

@@ -19,21 +19,18 @@
 #include "road/file_road.hpp"
 #include "road/road_profile.hpp"
 #include "road/road_surface.hpp"
+#include "road/road_test_support.hpp"
 
 namespace rollnoise {
 namespace {
 
 namespace fs = std::filesystem;
 
-#define EXPECT_MENTIONS(message, part) \
-  EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
 
 // A temporary project: models/surfaces/ with the test surfaces, cases/ for the case files.
 class SurfaceLibrary : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::random_device device;
-    root_ = fs::temp_directory_path() / ("rollnoise_test_surfaces_" + std::to_string(device()) + std::to_string(device()));
     fs::create_directories(root_ / "models/surfaces");
     fs::create_directories(root_ / "cases");
     const fs::path examples = fs::path(ROLLNOISE_SOURCE_DIR) / "tests/surfaces";
@@ -41,16 +38,7 @@ class SurfaceLibrary : public ::testing::Test {
       fs::copy_file(examples / name, root_ / "models/surfaces" / name);
     }
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
-  }
-  fs::path write(const std::string& relative, const std::string& text) const {
-    const fs::path path = root_ / relative;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
+  fs::path write(const std::string& relative, const std::string& text) const { return temp_.write(relative, text); }
   static std::unique_ptr<RoadProfile> profile_of(const CaseFile& file, double x_max = 1.0) {
     return make_road_profile(file.section("road"), 0.0, x_max);
   }
@@ -64,7 +52,8 @@ class SurfaceLibrary : public ::testing::Test {
     return "";
   }
 
-  fs::path root_;
+  test::TempFolder temp_{"rollnoise_test_surfaces_"};
+  const fs::path root_ = temp_.path();
 };
 
 TEST_F(SurfaceLibrary, SurfaceKeysMergeAndKeysBesideOverride) {
