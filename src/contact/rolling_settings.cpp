@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
@@ -44,13 +45,13 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   s.duration = rolling.positive("duration");
   s.static_load = rolling.positive("static_load");
   s.history = parse_history_kind(rolling.choice("history", {"auto", "direct", "modal", "fft"}, "auto"));
-  s.points_circumferential = static_cast<int>(rolling.integer("points_circumferential", 512, 8, 1 << 16));
-  if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");
+  if (rolling.contains("points_circumferential")) {
+    s.points_circumferential = static_cast<int>(rolling.integer("points_circumferential", 512, 8, 1 << 16));
+    if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");
+  }
   s.points_lateral = static_cast<int>(rolling.integer("points_lateral", 16, 1, 1024));
   s.contact_window = rolling.positive("contact_window", 0.2);
-  // 0 (one step per cell) by default: the sub-steps that carry the bands to 5 kHz bring the
-  // contact's cell-passing artefact into the bands above 0.5·v/dx (rolling_settings.hpp).
-  s.band_top = rolling.non_negative("band_top", 0.0);
+  s.band_top = rolling.non_negative("band_top", 5000.0);
   const std::string sampling = rolling.choice("road_sampling", {"lowpass", "cell_mean", "point"}, "lowpass");
   s.road_sampling = sampling == "point" ? RoadSampling::point
                     : sampling == "lowpass" ? RoadSampling::lowpass
@@ -76,6 +77,15 @@ double band_top_edge(double band_top) {
   // here so that contact does not reach down the pipeline): f_m = 1000·10^(x/10), f_2 = f_m·10^(1/20).
   const double x = std::round(10.0 * std::log10(band_top / 1000.0));
   return 1000.0 * std::pow(10.0, x / 10.0) * std::pow(10.0, 1.0 / 20.0);
+}
+
+int circumferential_points_for_band(double band_top, double circumference, double speed) {
+  if (!(band_top > 0.0)) throw std::invalid_argument("circumferential_points_for_band: band_top must be > 0");
+  // 0.99·v·N/(2·L) ≥ f_2, N even; the allowance keeps an exact fit from rounding up.
+  const double needed = 2.0 * band_top_edge(band_top) * circumference / (0.99 * speed);
+  const double half = std::ceil(0.5 * needed * (1.0 - 1e-12));
+  if (!(half < 1e9)) throw std::invalid_argument("circumferential_points_for_band: the grid would be too large");
+  return 2 * static_cast<int>(half);
 }
 
 int substeps_for_band(double band_top, double dx, double speed) {

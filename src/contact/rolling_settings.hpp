@@ -33,16 +33,19 @@ struct TyreRollingSettings {
   double duration = 0.0;          // s
   double static_load = 0.0;       // W, N
   HistoryKind history = HistoryKind::automatic;
-  int points_circumferential = 512;
+  // 0: derived from band_top (circumferential_points_for_band), or 512 with band_top = 0.
+  int points_circumferential = 0;
   int points_lateral = 16;
   double contact_window = 0.2;    // m, length of the fixed window around the bottom
-  // The nominal centre of the highest third-octave band the run must carry (Hz); 0: one cell
-  // per step, whatever band that gives. See substeps_for_band.
-  // Hz; 0: one step per cell. With sub-steps, the fixed contact points meeting the passing
-  // texture modulate the contact at the cell-passing frequency v/dx: above about 0.5·v/dx the
-  // force bands lie far above a twice-finer grid's (at 80 km/h +8, +15, +23 dB at 3.15, 4 and
-  // 5 kHz), so the band is not carried by default until contact points move with the tread.
-  double band_top = 0.0;
+  // The nominal centre of the highest third-octave band the run must carry (Hz; default 5000,
+  // the top of ISO 11819-2's CPX range); 0: one step per cell on 512 cells, whatever band that
+  // gives. Unless points_circumferential is given, the grid is made fine enough that one step
+  // per cell carries the band (circumferential_points_for_band). A given grid too coarse for the
+  // band takes sub-steps instead (substeps_for_band), which bring the cell-passing artefact
+  // into the bands above about 0.5·v/dx: the fixed contact points meeting the passing texture
+  // modulate the contact at v/dx (at 80 km/h on 512 cells +8, +15, +23 dB at 3.15, 4 and 5 kHz
+  // against 1024 cells); one step per cell has no such line (it aliases to 0 Hz).
+  double band_top = 5000.0;
   // road_sampling = "lowpass" (default) | "cell_mean" | "point" (before issue 10 §3): how the
   // contact points read texture finer than the cells (rolling_tyre.hpp, RoadSampling).
   RoadSampling road_sampling = RoadSampling::lowpass;
@@ -56,6 +59,11 @@ double band_top_edge(double band_top);
 // 1/(2Δt), so p is the least integer ≥ 1 with 0.99·p·v/(2·dx) ≥ band_top_edge(band_top).
 // band_top = 0: p = 1.
 int substeps_for_band(double band_top, double dx, double speed);
+// The least even number of cells around a tyre of circumference L such that one step per cell
+// (Δt = dx/v) carries the band_top band: 0.99·v·N/(2·L) ≥ band_top_edge(band_top). The grid then
+// resolves texture wavelengths down to 2·dx = 0.99·v/f_2, exactly those that f = v/λ maps into
+// the band. band_top must be > 0.
+int circumferential_points_for_band(double band_top, double circumference, double speed);
 TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling);
 
 }  // namespace rollnoise

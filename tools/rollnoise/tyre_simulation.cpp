@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -235,6 +236,23 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
   write_plot(dir, "pressure_map", map.str());
 }
 
+// Cells around the tyre: as given, or (by default) the least even count that lets one step per
+// cell carry the band_top band (rolling_settings.hpp), and never fewer than the plate's orders
+// need (2·M) nor than the paper's 512.
+int circumferential_points(const TyreRollingSettings& settings, const PlateParameters& plate,
+                           const ConfigTable& rolling) {
+  if (settings.points_circumferential > 0) return settings.points_circumferential;
+  if (settings.band_top <= 0.0) return 512;
+  const int needed = circumferential_points_for_band(settings.band_top, 2.0 * std::numbers::pi * plate.radius,
+                                                     settings.speed);
+  constexpr int largest = 1 << 16;
+  if (needed > largest)
+    rolling.fail("band_top", "needs " + std::to_string(needed) + " cells around the tyre at this speed (at most " +
+                                 std::to_string(largest) + "): lower band_top, raise speed, or give "
+                                 "points_circumferential (the band is then carried by sub-steps)");
+  return std::max({needed, 512, 2 * plate.circumferential_modes});
+}
+
 }  // namespace
 
 int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::steady_clock::time_point started) {
@@ -257,7 +275,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   TyreGrid grid;
   grid.radius = model.plate.radius;
   grid.width = model.plate.width;
-  grid.circumferential = settings.points_circumferential;
+  grid.circumferential = circumferential_points(settings, model.plate, rolling);
   grid.lateral = settings.points_lateral;
   grid.crown_radius = model.crown_radius;
   grid.tread_width = model.tread_width;
