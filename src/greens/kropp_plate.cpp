@@ -183,6 +183,16 @@ double KroppPlate::green(double dx, double y, double y0, double t) const {
   return modal_sum(dx, y, y0, time_factors(false, t, t).data());
 }
 
+void KroppPlate::green_along(std::span<const double> dx, double y, double y0, double t, std::span<double> out) const {
+  if (dx.size() != out.size()) throw std::invalid_argument("plate: green_along needs one output per dx");
+  if (!(t > 0.0) || std::isinf(t)) {
+    for (std::size_t i = 0; i < dx.size(); ++i) out[i] = green(dx[i], y, y0, t);
+    return;
+  }
+  const std::vector<double> factors = time_factors(false, t, t);
+  for (std::size_t i = 0; i < dx.size(); ++i) out[i] = modal_sum(dx[i], y, y0, factors.data());
+}
+
 double KroppPlate::static_compliance(double dx, double y, double y0) const {
   return modal_sum(dx, y, y0, inv_omega2_.data());
 }

@@ -20,6 +20,7 @@
 // with h_mn the unit-mass oscillator impulse response; it depends on x − x0 only (rotation
 // invariance) and is symmetric in the two points (reciprocity).
 #include <complex>
+#include <span>
 #include <vector>
 
 #include "greens/sdof_oscillator.hpp"
@@ -57,6 +58,8 @@ class KroppPlate {
 
   // g(t), m/(N·s), for dx = x − x0 (any real), lateral positions y, y0 in [0, b].
   double green(double dx, double y, double y0, double t) const;
+  // g(t) at many dx at once (out[i] for dx[i]): the per-mode time factors are computed once.
+  void green_along(std::span<const double> dx, double y, double y0, double t, std::span<double> out) const;
   // ∫_{t0}^{t1} g dt, m/N (t1 may be +infinity: the static compliance).
   double green_integral(double dx, double y, double y0, double t0, double t1) const;
   // α(ω) = ∫ g e^{−iωt} dt, m/N.

@@ -655,3 +655,24 @@ TEST(KroppPlate, PassengerCarModelFile) {
 
 }  // namespace
 }  // namespace rollnoise
+
+namespace rollnoise {
+namespace {
+
+// green_along shares the per-mode time factors between points: it must equal green() point by
+// point (bit for bit: the same sums in the same order), and reject a size mismatch.
+TEST(KroppPlate, GreenAlongEqualsGreenAtEachPoint) {
+  const KroppPlate plate(tyre_like(32, 5));
+  const double y = 0.5 * plate.parameters().width;
+  const std::vector<double> dx{-0.4, -0.05, 0.0, 0.013, 0.2, 0.9};
+  for (const double t : {0.0, 1e-4, 2.5e-3}) {
+    std::vector<double> out(dx.size());
+    plate.green_along(dx, y, 0.3 * y, t, out);
+    for (std::size_t i = 0; i < dx.size(); ++i) EXPECT_EQ(out[i], plate.green(dx[i], y, 0.3 * y, t)) << dx[i] << " " << t;
+  }
+  std::vector<double> short_out(2);
+  EXPECT_THROW(plate.green_along(dx, y, y, 1e-3, short_out), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rollnoise

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "analyse_command.hpp"
 #include "calibrate_command.hpp"
+#include "greens_command.hpp"
 #include "road_command.hpp"
 #include "simulate_command.hpp"
 
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   CLI::App* calibrate_cmd = rollnoise::add_calibrate_command(app, calibrate);
   rollnoise::RoadOptions road;
   CLI::App* road_cmd = rollnoise::add_road_command(app, road);
+  rollnoise::GreensOptions greens;
+  CLI::App* greens_cmd = rollnoise::add_greens_command(app, greens);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road, greens (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -61,6 +64,7 @@ int main(int argc, char** argv) {
     if (analyse_cmd->parsed()) return rollnoise::run_analyse(analyse);
     if (calibrate_cmd->parsed()) return rollnoise::run_calibrate(calibrate);
     if (road_cmd->parsed()) return rollnoise::run_road(road);
+    if (greens_cmd->parsed()) return rollnoise::run_greens(greens);
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;

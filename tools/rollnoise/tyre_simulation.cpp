@@ -19,6 +19,7 @@
 #include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
 #include "core/progress.hpp"
+#include "greens/centre_line_response.hpp"
 #include "greens/plate_factory.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
@@ -29,6 +30,7 @@
 #include "response/surface_response.hpp"
 #include "acoustics/band_power.hpp"
 #include "energy_budget_output.hpp"
+#include "greens_plots.hpp"
 #include "tyre_sound.hpp"
 
 namespace rollnoise {
@@ -166,31 +168,6 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   }
   if (revolution.size() < static_cast<std::size_t>(around)) revolution.clear();
   return revolution;
-}
-
-// The paper's Fig. 5a: the belt's Green's function along the circumference for an impulse at
-// the centre of the belt, at a few times after it.
-void write_greens_circumference(const fs::path& dir, const KroppPlate& plate, int points) {
-  const double b = plate.parameters().width;
-  const double length = plate.circumference();
-  const std::vector<double> times{0.25e-3, 0.5e-3, 1e-3, 2e-3};
-  std::ofstream out(dir / "greens_circumference.csv", std::ios::binary);
-  CsvWriter csv(out, {"x", "g_0.25ms", "g_0.5ms", "g_1ms", "g_2ms"});
-  for (int i = 0; i <= points; ++i) {
-    const double x = -0.5 * length + length * i / points;
-    double row[5] = {x, 0, 0, 0, 0};
-    for (std::size_t k = 0; k < times.size(); ++k) row[k + 1] = plate.green(x, 0.5 * b, 0.5 * b, times[k]);
-    csv.row(row, 5);
-  }
-  std::ostringstream gp;
-  gp << "# The belt's Green's function along the circumference (cf. Larsson 2000, Fig. 5a).\n"
-     << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
-     << "set output 'greens_circumference.png'\nset datafile separator ','\nset grid\nset key top right\n"
-     << "set title 'Green function of the belt along the circumference, unit impulse at x = 0 (mid-width)'\n"
-     << "set xlabel 'position around the tyre, x (m)'\nset ylabel 'g (mm/(N s))'\n"
-     << "plot for [c=2:5] 'greens_circumference.csv' using 1:(column(c)*1e3) with lines lw 1.5 "
-        "title columnheader(c)\n";
-  write_plot(dir, "greens_circumference", gp.str());
 }
 
 // The paper's Fig. 5b: the radial displacement of one material point over one revolution.
@@ -369,7 +346,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                    &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
-    write_greens_circumference(staged.staging(), plate, grid.circumferential);
+    write_greens_circumference(staged.staging(), *make_plate_centre_line(model.plate), grid.circumferential);
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 

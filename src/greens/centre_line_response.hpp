@@ -1,0 +1,54 @@
+#pragma once
+// What `rollnoise greens` tabulates for any tyre model: the response along the belt's centre
+// line to a radial force at the centre of the belt (x = 0), in the frequency domain (receptance
+// at any ω, the static compliance at ω = 0) and in the time domain (the Green's function, the
+// paper's Fig. 5a). One interface for every model, so that the verb and its outputs are written
+// once (the point models, the plate, and the layered tyres as they arrive).
+#include <complex>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rollnoise {
+
+class ConfigTable;
+struct PlateParameters;
+
+class CentreLineResponse {
+ public:
+  virtual ~CentreLineResponse() = default;
+
+  // The model-file `model` value.
+  virtual std::string model() const = 0;
+  // What the receptance includes (for the reader of the outputs), such as "belt only: the
+  // tread's local compliance is added by the contact stage".
+  virtual std::string description() const = 0;
+  // Circumference L = 2πR (m) of a tyre model; 0 for a point model.
+  virtual double circumference() const = 0;
+  // The response points a user most likely wants, m along the circumference (0 = the point).
+  virtual std::vector<double> default_distances() const = 0;
+  // A frequency range the model describes well, Hz (its modal truncation, or a few times its
+  // resonance).
+  virtual double default_top_frequency_hz() const = 0;
+  // Whether `distance` (m) is a place the model can answer for (a point model: its points).
+  virtual bool has_point(double distance) const = 0;
+
+  // Receptance α(ω) = u/F in m/N from the force at x = 0 to the response at `distance`;
+  // ω = 0 gives the static compliance.
+  virtual std::complex<double> receptance(double distance, double omega) const = 0;
+  // The Green's function g(t) in m/(N·s) (the displacement per unit impulse) for t > 0, without
+  // an instantaneous (δ) part, which receptance() includes.
+  virtual double green(double distance, double t) const = 0;
+  // green() at many distances at once (out[i] for distances[i]); models override it when the
+  // time-dependent part can be shared.
+  virtual void green_along(std::span<const double> distances, double t, std::span<double> out) const;
+};
+
+// Builds the view of a model file (the keys of a [tyre] table at its top level) with the readers
+// `simulate` uses: unknown keys and unphysical values are InputErrors naming the file and key.
+std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model);
+// The plate's view, for a plate already read (simulate draws its Fig. 5a from it).
+std::unique_ptr<CentreLineResponse> make_plate_centre_line(const PlateParameters& plate);
+
+}  // namespace rollnoise

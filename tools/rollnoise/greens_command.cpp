@@ -1,0 +1,289 @@
+#include "greens_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "core/case_file.hpp"
+#include "core/config_table.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/gnuplot.hpp"
+#include "core/hdf5_writer.hpp"
+#include "core/output_directory.hpp"
+#include "greens/centre_line_response.hpp"
+#include "greens_plots.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxFrequencies = 100000;
+constexpr std::size_t kMaxDistances = 10000;
+
+// "F1:F2:N": N frequencies evenly spaced from F1 to F2 inclusive, Hz.
+std::vector<double> parse_frequencies(const std::string& text) {
+  const auto bad = [&](const std::string& why) -> InputError {
+    return InputError("command line", "--frequencies", "'" + text + "': " + why);
+  };
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? std::string::npos : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos)
+    throw bad("expected F1:F2:N (Hz, Hz, a count), such as 0:5000:501");
+  double f1 = 0.0, f2 = 0.0;
+  long long n = 0;
+  try {
+    std::size_t used = 0;
+    const std::string a = text.substr(0, first), b = text.substr(first + 1, second - first - 1),
+                      c = text.substr(second + 1);
+    f1 = std::stod(a, &used);
+    if (used != a.size()) throw std::invalid_argument(a);
+    f2 = std::stod(b, &used);
+    if (used != b.size()) throw std::invalid_argument(b);
+    n = std::stoll(c, &used);
+    if (used != c.size()) throw std::invalid_argument(c);
+  } catch (const std::logic_error&) {
+    throw bad("F1 and F2 must be numbers and N an integer");
+  }
+  if (!std::isfinite(f1) || !std::isfinite(f2) || f1 < 0.0) throw bad("F1 and F2 must be finite and F1 >= 0");
+  if (n < 1 || n > kMaxFrequencies) throw bad("N must be from 1 to " + std::to_string(kMaxFrequencies));
+  if (n == 1 ? f2 != f1 : !(f2 > f1)) throw bad("F2 must be above F1 (or equal to it with N = 1)");
+  std::vector<double> f(static_cast<std::size_t>(n));
+  for (long long i = 0; i < n; ++i)
+    f[static_cast<std::size_t>(i)] = n == 1 ? f1 : f1 + (f2 - f1) * static_cast<double>(i) / static_cast<double>(n - 1);
+  return f;
+}
+
+std::vector<double> checked_distances(const GreensOptions& options, const CentreLineResponse& response) {
+  std::vector<double> d = options.distances.empty() ? response.default_distances() : options.distances;
+  if (d.size() > kMaxDistances)
+    throw InputError("command line", "--distances", "at most " + std::to_string(kMaxDistances) + " distances");
+  const double half = 0.5 * response.circumference();
+  for (const double x : d) {
+    std::ostringstream value;
+    value << x;
+    if (!std::isfinite(x)) throw InputError("command line", "--distances", "must be finite numbers (m)");
+    if (response.circumference() > 0.0 && std::abs(x) > half + 1e-12)
+      throw InputError("command line", "--distances",
+                       value.str() + " m lies beyond half the circumference (" + std::to_string(half) + " m)");
+    if (!response.has_point(x)) {
+      std::ostringstream points;
+      for (const double p : response.default_distances()) points << ' ' << p;
+      throw InputError("command line", "--distances",
+                       value.str() + " m is not a point of the " + response.model() + " model; its points are at" +
+                           points.str() + " m");
+    }
+  }
+  return d;
+}
+
+void write_table(const fs::path& path, const std::vector<double>& f, const std::vector<double>& d,
+                 const Eigen::MatrixXcd& values) {
+  std::ofstream out(path, std::ios::binary);
+  CsvWriter csv(out, {"frequency_hz", "distance_m", "re", "im"});
+  // Distance by distance, so that each response point is one block of rows (and one line).
+  for (std::size_t j = 0; j < d.size(); ++j)
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const std::complex<double> v = values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      const double row[] = {f[i], d[j], v.real(), v.imag()};
+      csv.row(row, 4);
+    }
+}
+
+// Point and transfer mobility against frequency: magnitude (dB re 1 m/(N·s)) and phase, one
+// line per distance (selected by its value in column 2).
+void plot_mobility(const fs::path& dir, const CentreLineResponse& response, const std::vector<double>& distances,
+                   bool log_axis) {
+  std::ostringstream magnitude, phase;
+  for (std::size_t k = 0; k < distances.size(); ++k) {
+    std::ostringstream select;
+    select.precision(17);
+    select << "(abs($2 - (" << distances[k] << ")) < 1e-9 ? ";
+    const char* sep = k == 0 ? "plot " : ", \\\n     ";
+    magnitude << sep << "'mobility.csv' using 1:" << select.str() << "20*log10(sqrt($3**2 + $4**2)) : 1/0) "
+              << "with lines lw 1.5 title 'd = " << distances[k] << " m'";
+    phase << sep << "'mobility.csv' using 1:" << select.str() << "atan2($4, $3)*180/pi : 1/0) with lines lw 1.5 notitle";
+  }
+  std::ostringstream gp;
+  gp << "# Drawn by rollnoise greens from mobility.csv; run `gnuplot mobility.gp` to redraw.\n"
+     << "set terminal pngcairo size 1000,750 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'mobility.png'\nset datafile separator ','\nset grid\nset key top right\n"
+     << (log_axis ? "set logscale x\n" : "")
+     << "set multiplot layout 2,1 title 'Mobility of the " << response.model()
+     << ": force at x = 0, response at distance d along the circumference'\n"
+     << "set ylabel '|Y| (dB re 1 m/(N s))'\n" << magnitude.str() << "\n"
+     << "set xlabel 'frequency (Hz)'\nset ylabel 'phase (deg)'\nset yrange [-180:180]\nset ytics 90\n"
+     << phase.str() << "\nunset multiplot\n";
+  write_plot(dir, "mobility", gp.str());
+}
+
+// A point model's Green's function against time at each of its points (green_time.csv, .gp, .png).
+void write_green_against_time(const fs::path& dir, const CentreLineResponse& response, const Eigen::VectorXd& time,
+                              const Eigen::MatrixXd& green, const std::vector<double>& points) {
+  {
+    std::vector<std::string> header{"time"};
+    for (std::size_t j = 0; j < points.size(); ++j) header.push_back("g_" + std::to_string(j + 1));
+    std::ofstream out(dir / "green_time.csv", std::ios::binary);
+    CsvWriter csv(out, header);
+    std::vector<double> row(points.size() + 1);
+    for (Eigen::Index k = 0; k < time.size(); ++k) {
+      row[0] = time(k);
+      for (std::size_t j = 0; j < points.size(); ++j) row[j + 1] = green(k, static_cast<Eigen::Index>(j));
+      csv.row(row.data(), row.size());
+    }
+  }
+  std::ostringstream gp;
+  gp << "# Drawn by rollnoise greens from green_time.csv; run `gnuplot green_time.gp` to redraw.\n"
+     << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'green_time.png'\nset datafile separator ','\nset grid\nset key top right\n"
+     << "set title 'Green function of the " << response.model() << ": unit impulse at point 1'\n"
+     << "set xlabel 'time (ms)'\nset ylabel 'g (mm/(N s))'\n"
+     << "plot for [c=2:" << points.size() + 1 << "] 'green_time.csv' using ($1*1e3):(column(c)*1e3) with lines lw 1.5 "
+        "title columnheader(c)\n";
+  write_plot(dir, "green_time", gp.str());
+}
+
+}  // namespace
+
+CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "greens",
+      "Tabulate and draw a tyre model's Green's functions and mobilities: receptance.csv and mobility.csv\n"
+      "(frequency_hz,distance_m,re,im), greens.h5, the Green's function along the circumference (cf. the\n"
+      "paper's Fig. 5a) and the point and transfer mobility, each plot with its gnuplot script.");
+  cmd->add_option("model", options.model, "A model file (models/tyres/NAME.toml): sdof, coupled_sdof or plate")
+      ->required();
+  cmd->add_option("--out", options.out, "Output folder (default out/<model name>_greens); written atomically");
+  cmd->add_option("--frequencies", options.frequencies,
+                  "F1:F2:N, N frequencies evenly spaced from F1 to F2 inclusive, Hz (default 0 to the model's "
+                  "top frequency, 501 of them: 5 kHz in 10 Hz steps for a tyre); the row at 0 Hz is the static compliance");
+  cmd->add_option("--distances", options.distances,
+                  "Response points, m along the circumference on the centre line from the excitation at the belt "
+                  "centre, comma separated (default: 0, 0.05, 0.1, 0.2, 0.5 for a tyre; the points of a point model)")
+      ->delimiter(',');
+  cmd->footer(
+      "Examples:\n"
+      "  rollnoise greens models/tyres/passenger_205_55R16.toml --out out/plate_greens\n"
+      "  rollnoise greens models/tyres/passenger_205_55R16.toml --frequencies 0:2000:201 --distances 0,0.1");
+  return cmd;
+}
+
+int run_greens(const GreensOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const fs::path input(options.model);
+  std::error_code ec;
+  if (!fs::is_regular_file(input, ec)) throw InputError(options.model, "", "file not found (or not a regular file)");
+  const CaseFile file = CaseFile::load_model(input);
+  const ConfigTable top = file.top();
+  const std::unique_ptr<CentreLineResponse> response = make_centre_line_response(top);
+  const std::vector<double> distances = checked_distances(options, *response);
+  const double top_hz = response->default_top_frequency_hz();
+  const std::vector<double> frequencies =
+      options.frequencies.empty()
+          ? parse_frequencies("0:" + std::to_string(top_hz) + ":501")
+          : parse_frequencies(options.frequencies);
+
+  const auto nf = static_cast<Eigen::Index>(frequencies.size());
+  const auto nd = static_cast<Eigen::Index>(distances.size());
+  Eigen::MatrixXcd receptance(nf, nd), mobility(nf, nd);
+  for (Eigen::Index i = 0; i < nf; ++i) {
+    const double omega = 2.0 * std::numbers::pi * frequencies[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < nd; ++j) {
+      receptance(i, j) = response->receptance(distances[static_cast<std::size_t>(j)], omega);
+      mobility(i, j) = std::complex<double>(0.0, omega) * receptance(i, j);  // Y = iω·α
+    }
+  }
+  if (!receptance.allFinite())
+    throw InputError(options.model, "", "the model's receptance is not finite at these frequencies; check its values");
+
+  // The Green's function in time: along the whole circumference for a tyre (512 points, one
+  // revolution, as the paper's Fig. 5a), at the model's points otherwise; 200 samples of
+  // 1/(2·top frequency).
+  const bool tyre = response->circumference() > 0.0;
+  std::vector<double> around;
+  if (tyre) {
+    for (int i = 0; i < 512; ++i) around.push_back(-0.5 * response->circumference() + response->circumference() * i / 512.0);
+  } else {
+    around = response->default_distances();
+  }
+  const double dt = 0.5 / top_hz;
+  Eigen::VectorXd time(200);
+  Eigen::MatrixXd green(time.size(), static_cast<Eigen::Index>(around.size()));
+  std::vector<double> row(around.size());
+  for (Eigen::Index k = 0; k < time.size(); ++k) {
+    time(k) = static_cast<double>(k + 1) * dt;
+    response->green_along(around, time(k), row);
+    for (std::size_t j = 0; j < around.size(); ++j) green(k, static_cast<Eigen::Index>(j)) = row[j];
+  }
+
+  const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
+  StagedOutputDirectory staged(out);
+  write_table(staged.staging() / "receptance.csv", frequencies, distances, receptance);
+  write_table(staged.staging() / "mobility.csv", frequencies, distances, mobility);
+  {
+    Hdf5Writer h5(staged.staging() / "greens.h5");
+    h5.attribute("/", "model", response->model());
+    h5.attribute("/", "description", response->description());
+    h5.attribute("/", "circumference_m", response->circumference());
+    h5.attribute("/", "rollnoise_version", std::string(ROLLNOISE_VERSION));
+    h5.group("frequency_domain");
+    const Eigen::Map<const Eigen::VectorXd> f(frequencies.data(), nf);
+    const Eigen::Map<const Eigen::VectorXd> d(distances.data(), nd);
+    h5.write("frequency_domain/frequency", Eigen::VectorXd(f), "Hz", "frequencies of the rows");
+    h5.write("frequency_domain/distance", Eigen::VectorXd(d), "m",
+             "response points along the circumference on the centre line from the excitation (columns)");
+    h5.write("frequency_domain/receptance_re", Eigen::MatrixXd(receptance.real()), "m/N",
+             "real part of the receptance u/F, [frequency][distance]; 0 Hz: the static compliance");
+    h5.write("frequency_domain/receptance_im", Eigen::MatrixXd(receptance.imag()), "m/N",
+             "imaginary part of the receptance u/F, [frequency][distance]");
+    h5.group("time_domain");
+    h5.write("time_domain/time", time, "s", "times after the impulse (rows)");
+    h5.write("time_domain/distance", Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(around.data(),
+                                                                                         static_cast<Eigen::Index>(around.size()))),
+             "m", "response points (columns): one revolution for a tyre, the points of a point model");
+    h5.write("time_domain/green", green, "m/(N*s)",
+             "displacement per unit impulse at x = 0, [time][distance], without the instantaneous (delta) part");
+  }
+  if (tyre) {
+    write_greens_circumference(staged.staging(), *response, 512);
+  } else {
+    write_green_against_time(staged.staging(), *response, time, green, around);
+  }
+  plot_mobility(staged.staging(), *response, distances, frequencies.front() > 0.0);
+
+  nlohmann::json summary;
+  summary["model_file"] = options.model;
+  summary["model"] = response->model();
+  summary["description"] = response->description();
+  summary["circumference_m"] = response->circumference();
+  summary["static_compliance_m_per_N"] = nlohmann::json::array();
+  for (const double x : distances)
+    summary["static_compliance_m_per_N"].push_back({{"distance_m", x}, {"value", response->receptance(x, 0.0).real()}});
+  summary["settings"] = {{"frequencies", frequencies.size()},
+                         {"frequency_range_hz", {frequencies.front(), frequencies.back()}},
+                         {"distances_m", distances},
+                         {"time_step_s", dt},
+                         {"time_samples", time.size()}};
+  summary["rollnoise_version"] = ROLLNOISE_VERSION;
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
+  staged.commit();
+  std::printf("rollnoise: wrote %s (receptance.csv, mobility.csv, greens.h5, summary.json and plots): %s, static point "
+              "compliance %.4g m/N\n",
+              out.string().c_str(), response->model().c_str(), response->receptance(distances.front(), 0.0).real());
+  return 0;
+}
+
+}  // namespace rollnoise

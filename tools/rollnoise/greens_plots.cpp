@@ -1,0 +1,40 @@
+#include "greens_plots.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "core/csv.hpp"
+#include "core/gnuplot.hpp"
+#include "greens/centre_line_response.hpp"
+
+namespace rollnoise {
+
+void write_greens_circumference(const std::filesystem::path& dir, const CentreLineResponse& response, int points) {
+  const double length = response.circumference();
+  const std::vector<double> times{0.25e-3, 0.5e-3, 1e-3, 2e-3};
+  {
+    std::ofstream out(dir / "greens_circumference.csv", std::ios::binary);
+    CsvWriter csv(out, {"x", "g_0.25ms", "g_0.5ms", "g_1ms", "g_2ms"});
+    std::vector<double> x(static_cast<std::size_t>(points) + 1);
+    for (int i = 0; i <= points; ++i) x[static_cast<std::size_t>(i)] = -0.5 * length + length * i / points;
+    std::vector<std::vector<double>> g(times.size(), std::vector<double>(x.size()));
+    for (std::size_t k = 0; k < times.size(); ++k) response.green_along(x, times[k], g[k]);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double row[5] = {x[i], g[0][i], g[1][i], g[2][i], g[3][i]};
+      csv.row(row, 5);
+    }
+  }
+  std::ostringstream gp;
+  gp << "# The belt's Green's function along the circumference (cf. Larsson 2000, Fig. 5a).\n"
+     << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'greens_circumference.png'\nset datafile separator ','\nset grid\nset key top right\n"
+     << "set title 'Green function of the " << response.model()
+     << " along the circumference, unit impulse at x = 0 (mid-width)'\n"
+     << "set xlabel 'position around the tyre, x (m)'\nset ylabel 'g (mm/(N s))'\n"
+     << "plot for [c=2:5] 'greens_circumference.csv' using 1:(column(c)*1e3) with lines lw 1.5 "
+        "title columnheader(c)\n";
+  write_plot(dir, "greens_circumference", gp.str());
+}
+
+}  // namespace rollnoise
