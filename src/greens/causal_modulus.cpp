@@ -52,6 +52,10 @@ std::complex<double> CausalModulus::factor(std::complex<double> omega) const {
   return psi0_ * (1.0 + c_ * relaxation_log(omega));
 }
 
+double CausalModulus::high_frequency_factor() const noexcept {
+  return psi0_ * (1.0 + c_ * std::log(tau_long / tau_short));
+}
+
 double CausalModulus::loss_factor_at(double omega) const {
   const std::complex<double> psi = factor(omega);
   return psi.imag() / psi.real();

@@ -51,6 +51,8 @@ class CausalModulus {
   std::complex<double> factor(std::complex<double> omega) const;
   // ψ(0) = ψ0, the relaxed modulus over the reference storage modulus.
   double static_factor() const noexcept { return psi0_; }
+  // ψ(∞) = ψ0·(1 + c·ln(τ2/τ1)), the unrelaxed (instantaneous) modulus over the reference one.
+  double high_frequency_factor() const noexcept;
   // The loss factor Im ψ / Re ψ at a real frequency ω (rad/s).
   double loss_factor_at(double omega) const;
 
