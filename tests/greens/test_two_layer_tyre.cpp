@@ -32,6 +32,7 @@
 #include "core/error.hpp"
 #include "greens/kropp_plate.hpp"
 #include "greens/layer_stiffness.hpp"
+#include "greens/model_factory.hpp"
 #include "greens/tread_compliance.hpp"
 #include "greens/two_layer_factory.hpp"
 #include "greens/two_layer_greens_functions.hpp"
@@ -516,6 +517,12 @@ TEST(TwoLayerTyre, PassengerModelFile) {
   const std::string path = std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/passenger_205_55R16_two_layer.toml";
   const TwoLayerParameters p = read_two_layer_tyre(CaseFile::load_model(path).top());
   const TwoLayerTyre tyre(p);
+  // The factory of surface-receptance models builds the same tyre; the point-model factory
+  // names what it takes.
+  const std::unique_ptr<SurfaceReceptanceModel> made = make_surface_receptance_model(CaseFile::load_model(path).top());
+  EXPECT_EQ(made->name(), "two_layer");
+  EXPECT_EQ(made->circumference(), tyre.circumference());
+  EXPECT_THROW(make_greens_model(CaseFile::load_model(path).top()), InputError);
   // The same tyre as the plate file, 205/55 R16.
   EXPECT_NEAR(p.radius, 0.4064 / 2 + 0.55 * 0.205, 0.005);
   EXPECT_EQ(p.circumferential_modes, 256);
@@ -549,6 +556,7 @@ TEST(TwoLayerTyre, PassengerModelFile) {
   const auto t1 = std::chrono::steady_clock::now();
   const cd alpha = at_1k.receptance(cell, cell);
   const auto t2 = std::chrono::steady_clock::now();
+  EXPECT_EQ(made->at(2 * pi * 1000)->receptance(cell, cell), alpha);
   const double table_seconds = std::chrono::duration<double>(t1 - t0).count();
   const double sum_seconds = std::chrono::duration<double>(t2 - t1).count();
   std::printf("passenger two_layer: first radial resonance %.1f Hz, ring frequency %.1f Hz, static stiffness "
