@@ -1,5 +1,8 @@
 #include "greens/layer_stiffness.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/LU>
 
 #include "greens/tanh_sqrt_function.hpp"
@@ -8,6 +11,14 @@ namespace rollnoise {
 namespace {
 
 using cd = std::complex<double>;
+
+bool close(double a, double b) { return std::abs(a - b) <= 1e-10 * std::max(std::abs(a), std::abs(b)); }
+
+// Isotropic to round-off: C11 = C22 = C33, C12 = C13 = C23, C44 = C55 = C66 = (C11 − C12)/2.
+bool isotropic(const OrthotropicStiffness& s) {
+  return close(s.c11, s.c22) && close(s.c11, s.c33) && close(s.c12, s.c13) && close(s.c12, s.c23) &&
+         close(s.c44, s.c55) && close(s.c55, s.c66) && close(s.c55, 0.5 * (s.c11 - s.c12));
+}
 
 }  // namespace
 
@@ -55,8 +66,22 @@ LayerStiffness layer_stiffness(const OrthotropicStiffness& s, cd modulus_factor,
       q11 * x * x + q66 * y * y - inertia, (q12 + q66) * x * y, -i * x * r13,  //
       (q12 + q66) * x * y, q66 * x * x + q22 * y * y - inertia, -i * y * r23;
 
+  // f(BC) and f(CB). An isotropic layer's roots are known: μ_P = k̃² − Ω̃²·C55/C11 and
+  // μ_S = k̃² − Ω̃² (twice), and its minimal polynomial is (x − μ_P)(x − μ_S) at every ω, the
+  // static Jordan block included: the two-point form is exact and needs no Schur form.
+  // Otherwise the general Schur–Parlett form.
+  Eigen::Matrix3cd fe, fo;
+  if (isotropic(s)) {
+    const cd mu_s = x * x + y * y - inertia;
+    const cd mu_p = x * x + y * y - inertia * (s.c55 / s.c11);
+    fe = tanh_sqrt(Eigen::Matrix3cd(b * c), mu_s, mu_p);
+    fo = tanh_sqrt(Eigen::Matrix3cd(c * b), mu_s, mu_p);
+  } else {
+    fe = tanh_sqrt(Eigen::Matrix3cd(b * c));
+    fo = tanh_sqrt(Eigen::Matrix3cd(c * b));
+  }
   // Symmetric family at the top face: O = Q·E, Q = C·f(BC).
-  const Eigen::Matrix3cd q = c * tanh_sqrt(Eigen::Matrix3cd(b * c));
+  const Eigen::Matrix3cd q = c * fe;
   // Solve u_z = Q00 u_x + Q01 u_y + Q02 τ̃_zz for τ̃_zz, then τ̃_xz, τ̃_yz follow.
   Eigen::Matrix3cd ks;  // rows (τ̃_xz, τ̃_yz, τ̃_zz), columns (u_x, u_y, u_z)
   {
@@ -70,7 +95,7 @@ LayerStiffness layer_stiffness(const OrthotropicStiffness& s, cd modulus_factor,
     }
   }
   // Antisymmetric family at the top face: E = R·O, R = B·f(CB).
-  const Eigen::Matrix3cd r = b * tanh_sqrt(Eigen::Matrix3cd(c * b));
+  const Eigen::Matrix3cd r = b * fo;
   // (u_x, u_y) = R[0:2,0] u_z + R_s (τ̃_xz, τ̃_yz): solve for the shear tractions.
   Eigen::Matrix3cd ka;
   {

@@ -13,42 +13,50 @@ namespace {
 using cd = std::complex<double>;
 using std::numbers::pi;
 
+// Complex arithmetic without the slow IEEE recovery paths of the library (__divdc3, csqrt,
+// cexp): every value here stays far inside the range of doubles (|μ| ≲ 1e20).
+cd divide(cd z, cd w) { return z * std::conj(w) / std::norm(w); }
+
+// The principal square root (Re ≥ 0).
+cd principal_sqrt(cd z) {
+  const double x = z.real(), y = z.imag();
+  if (x == 0.0 && y == 0.0) return 0.0;
+  const double t = std::sqrt(0.5 * (std::sqrt(x * x + y * y) + std::abs(x)));
+  return x >= 0.0 ? cd(t, y / (2.0 * t)) : cd(std::abs(y) / (2.0 * t), std::copysign(t, y));
+}
+
+double magnitude(cd z) { return std::sqrt(std::norm(z)); }
+
 // The Cauchy integral by the trapezoidal rule on a circle of radius ρ about the centre c of the
 // points: its error falls as (s/ρ)^N + (ρ/r)^N, s the points' spread about c and r the distance
-// from c to the nearest pole. Points within r/8 use ρ = r/2 and 64 nodes (error ≤ 2^-64); points
-// within r/64, such as the round-off split of a repeated root, use ρ = r/8 and 24 nodes
-// (≤ 8^-24 ≈ 2e-22), at a third of the cost. The rounding of the sum grows like (r/ρ)^(n−1)·ε
-// for n points: at most 64ε.
-constexpr double close_fraction = 0.125;
-constexpr double very_close_fraction = 1.0 / 64.0;
+// from c to the nearest pole. Points within r/16 use ρ = r/4 and 28 nodes: both ratios are at
+// most 1/4, the error at most 4^-28 ≈ 1.4e-17. The rounding of the sum grows like
+// (r/ρ)^(n−1)·ε for n points: at most 16ε. Points farther apart take the difference quotient,
+// whose cancellation is then at most about 2r/s·ε ≤ 32ε.
+constexpr double close_fraction = 1.0 / 16.0;
+constexpr int contour_nodes = 28;
 
-template <int nodes>
-const std::array<cd, nodes>& unit_roots() {
-  static const std::array<cd, nodes> roots = [] {
-    std::array<cd, nodes> w{};
-    for (int k = 0; k < nodes; ++k) w[static_cast<std::size_t>(k)] = std::polar(1.0, 2.0 * pi * k / nodes);
+const std::array<cd, contour_nodes>& unit_roots() {
+  static const std::array<cd, contour_nodes> roots = [] {
+    std::array<cd, contour_nodes> w{};
+    for (int k = 0; k < contour_nodes; ++k) w[static_cast<std::size_t>(k)] = std::polar(1.0, 2.0 * pi * k / contour_nodes);
     return w;
   }();
   return roots;
 }
 
-template <int nodes, std::size_t n>
-cd contour_sum(const std::array<cd, n>& z, cd centre, double radius) {
+// f[z_0, …, z_{n−1}] = (1/2πi)∮ f(z)/Π(z − z_j) dz, for points within r/16 of `centre`.
+template <std::size_t n>
+cd contour_divided(const std::array<cd, n>& z, cd centre, double r) {
+  const double radius = 0.25 * r;
   cd sum = 0.0;
-  for (const cd w : unit_roots<nodes>()) {
+  for (const cd w : unit_roots()) {
     const cd point = centre + radius * w;
     cd denominator = 1.0;
     for (const cd zj : z) denominator *= point - zj;
-    sum += tanh_sqrt(point) * (radius * w) / denominator;
+    sum += divide(tanh_sqrt(point) * (radius * w), denominator);
   }
-  return sum / static_cast<double>(nodes);
-}
-
-// f[z_0, …, z_{n−1}] = (1/2πi)∮ f(z)/Π(z − z_j) dz, for points within r/8 of `centre`.
-template <std::size_t n>
-cd contour_divided(const std::array<cd, n>& z, cd centre, double spread, double r) {
-  if (spread <= very_close_fraction * r) return contour_sum<24>(z, centre, 0.125 * r);
-  return contour_sum<64>(z, centre, 0.5 * r);
+  return sum / static_cast<double>(contour_nodes);
 }
 
 // Points within 1e-8·r of their centre c (a repeated root split by round-off) need only the
@@ -101,46 +109,46 @@ cd tanh_sqrt(cd mu) {
   }
   // Principal root: Re s ≥ 0, so e^{−2s} never overflows; f is even in s, so the branch is
   // immaterial.
-  const cd s = std::sqrt(mu);
-  const cd e = std::exp(-2.0 * s);
-  return (1.0 - e) / ((1.0 + e) * s);
+  const cd s = principal_sqrt(mu);
+  const cd e = std::polar(std::exp(-2.0 * s.real()), -2.0 * s.imag());
+  return divide(1.0 - e, (1.0 + e) * s);
 }
 
 double tanh_sqrt_pole_distance(cd mu) {
   const auto pole = [](double j) { return -(pi * (j + 0.5)) * (pi * (j + 0.5)); };
   const double x = mu.real();
-  double best = std::abs(mu - pole(0.0));
+  double best = magnitude(mu - pole(0.0));
   if (x < pole(0.0)) {
     const double t = std::sqrt(-x) / pi - 0.5;
-    for (const double j : {std::floor(t), std::ceil(t)}) best = std::min(best, std::abs(mu - pole(std::max(j, 0.0))));
+    for (const double j : {std::floor(t), std::ceil(t)}) best = std::min(best, magnitude(mu - pole(std::max(j, 0.0))));
   }
   return best;
 }
 
 cd tanh_sqrt_divided(cd a, cd b) {
   const cd centre = 0.5 * (a + b);
-  const double spread = 0.5 * std::abs(a - b);
+  const double spread = 0.5 * magnitude(a - b);
   const double r = tanh_sqrt_pole_distance(centre);
   if (spread <= confluent_fraction * r) return derivatives(centre).first;
-  if (spread <= close_fraction * r) return contour_divided<2>({a, b}, centre, spread, r);
-  return (tanh_sqrt(a) - tanh_sqrt(b)) / (a - b);
+  if (spread <= close_fraction * r) return contour_divided<2>({a, b}, centre, r);
+  return divide(tanh_sqrt(a) - tanh_sqrt(b), a - b);
 }
 
 cd tanh_sqrt_divided(cd a, cd b, cd c) {
   const cd centre = (a + b + c) / 3.0;
-  const double spread = std::max({std::abs(a - centre), std::abs(b - centre), std::abs(c - centre)});
+  const double spread = std::max({magnitude(a - centre), magnitude(b - centre), magnitude(c - centre)});
   const double r = tanh_sqrt_pole_distance(centre);
   if (spread <= confluent_fraction * r) return derivatives(centre).half_second;
-  if (spread <= close_fraction * r) return contour_divided<3>({a, b, c}, centre, spread, r);
+  if (spread <= close_fraction * r) return contour_divided<3>({a, b, c}, centre, r);
   // The recursion divides by the widest pair: put it first and last.
   std::array<cd, 3> z{a, b, c};
-  const double ab = std::abs(a - b), bc = std::abs(b - c), ac = std::abs(a - c);
+  const double ab = magnitude(a - b), bc = magnitude(b - c), ac = magnitude(a - c);
   if (ab >= ac && ab >= bc) {
     z = {a, c, b};
   } else if (bc >= ac && bc >= ab) {
     z = {b, a, c};
   }
-  return (tanh_sqrt_divided(z[0], z[1]) - tanh_sqrt_divided(z[1], z[2])) / (z[0] - z[2]);
+  return divide(tanh_sqrt_divided(z[0], z[1]) - tanh_sqrt_divided(z[1], z[2]), z[0] - z[2]);
 }
 
 Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m) {
@@ -154,6 +162,12 @@ Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m) {
             t(0, 1) * t(1, 2) * tanh_sqrt_divided(t(0, 0), t(1, 1), t(2, 2));
   const Eigen::Matrix3cd& u = schur.matrixU();
   return u * f * u.adjoint();
+}
+
+Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m, cd mu1, cd mu2) {
+  Eigen::Matrix3cd f = tanh_sqrt_divided(mu1, mu2) * m;
+  f.diagonal().array() += tanh_sqrt(mu1) - tanh_sqrt_divided(mu1, mu2) * mu1;
+  return f;
 }
 
 }  // namespace rollnoise

@@ -13,12 +13,11 @@
 //   F_ii = f(t_ii),  F_01 = t_01 f[t_00, t_11],  F_12 = t_12 f[t_11, t_22],
 //   F_02 = t_02 f[t_00, t_22] + t_01 t_12 f[t_00, t_11, t_22].
 // Divided differences of points that lie close together compared with their distance r to the
-// nearest pole (within r/8 of their centre) come from the Cauchy integral on a circle about
-// them (trapezoidal rule: 64 nodes on radius r/2, or 24 nodes on r/8 for points within r/64,
-// such as the round-off split of a repeated root; error below 1e-19 either way); for confluent
-// points this is the derivative, exactly in the limit; points within 1e-8·r, such as a repeated
-// root, take the derivatives f', f''/2 at their centre directly. Points farther apart use the recursive
-// difference quotient, whose cancellation is then bounded by a small factor. The switch is continuous
+// nearest pole (within r/16 of their centre) come from the Cauchy integral on a circle of radius
+// r/4 about them (trapezoidal rule, 28 nodes: error below 2e-17); points within 1e-8·r, such as
+// a repeated root split by round-off, take the derivatives f', f''/2 at their centre. Points
+// farther apart use the recursive difference quotient, whose cancellation is then bounded by a
+// small factor. The switches are continuous
 // to round-off (tests/greens/test_two_layer_layer.cpp).
 #include <complex>
 
@@ -32,6 +31,12 @@ std::complex<double> tanh_sqrt_divided(std::complex<double> a, std::complex<doub
 std::complex<double> tanh_sqrt_divided(std::complex<double> a, std::complex<double> b, std::complex<double> c);
 // f(M) for any 3×3 complex matrix whose eigenvalues are not poles of f.
 Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m);
+// f(M) for a matrix whose minimal polynomial divides (x − μ1)(x − μ2), given μ1 and μ2: then
+// f(M) = f(μ1)·I + f[μ1, μ2]·(M − μ1·I) exactly (Hermite interpolation), μ1 = μ2 included. An
+// isotropic layer is such a case: its three roots are P, S, S, the two S waves (SV and SH) have
+// independent eigenvectors, and at ω = 0, where P = S, the Jordan block has size 2. With μ1, μ2
+// known in closed form this needs neither a Schur form nor a split of a repeated root.
+Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m, std::complex<double> mu1, std::complex<double> mu2);
 
 // The distance from μ to the nearest pole of f.
 double tanh_sqrt_pole_distance(std::complex<double> mu);
