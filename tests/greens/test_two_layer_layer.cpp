@@ -169,6 +169,30 @@ TEST(TanhSqrt, MatrixFunctionDiagonalisableAndDefective) {
   }
 }
 
+TEST(TanhSqrt, TwoRootFormForAMinimalPolynomialOfDegreeTwo) {
+  // f(M) = f(μ1)I + f[μ1, μ2](M − μ1 I) when (x − μ1)(x − μ2) annihilates M: roots P, S, S with
+  // independent S eigenvectors (an isotropic layer at ω ≠ 0), and a Jordan block of size 2 with
+  // a simple root equal to it (ω = 0), against the Schur–Parlett form and the Jordan formula.
+  Eigen::Matrix3cd s;
+  s << 1.0, 2.0, 0.0, 0.5, 1.0, 1.0, cd(0, 1), 0.0, 3.0;
+  const Eigen::Matrix3cd si = s.inverse();
+  for (const auto& [p, q] : {std::pair{cd(3.0, 0.1), cd(1.0, 0.1)}, {cd(-20.0, 1.0), cd(-19.9, 1.0)},
+                             {cd(500.0, -3.0), cd(499.9999, -3.0)}, {cd(0.2, 0.0), cd(0.2 + 1e-12, 0.0)}}) {
+    const Eigen::Matrix3cd m = s * Eigen::Vector3cd(p, q, q).asDiagonal() * si;
+    const Eigen::Matrix3cd expected = tanh_sqrt(m);
+    EXPECT_LT((tanh_sqrt(m, q, p) - expected).norm() / expected.norm(), 1e-10) << p << " " << q;
+  }
+  for (const cd mu : {cd(1.3, 0.2), cd(-7.0, 0.1), cd(400.0, -30.0)}) {
+    Eigen::Matrix3cd j = mu * Eigen::Matrix3cd::Identity();
+    j(0, 1) = 1.0;  // a 2-block and a 1-block: (x − μ)² annihilates it
+    const cld lm(mu.real(), mu.imag());
+    Eigen::Matrix3cd fj = to_cd(f_ld(lm)) * Eigen::Matrix3cd::Identity();
+    fj(0, 1) = to_cd(f1_ld(lm));
+    const Eigen::Matrix3cd expected = s * fj * si;
+    EXPECT_LT((tanh_sqrt(Eigen::Matrix3cd(s * j * si), mu, mu) - expected).norm() / expected.norm(), 1e-12) << mu;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. The causal modulus.
 
