@@ -54,7 +54,7 @@ class SurfaceReceptanceModel {
   virtual double circumference() const = 0;  // L, m
   virtual double width() const = 0;          // b, m
   // The response at angular frequency ω (rad/s; ω = 0 exactly is the static case; Im ω ≤ 0 is
-  // allowed for an exponential window).
+  // allowed for an exponential window). It may refer to the model, which must outlive it.
   virtual std::unique_ptr<SurfaceResponse> at(std::complex<double> omega) const = 0;
 };
 

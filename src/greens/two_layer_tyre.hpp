@@ -72,7 +72,8 @@ struct TwoLayerParameters {
 
 class TwoLayerTyre;
 
-// The tyre at one frequency: the modal compliances of all modes, then cheap modal sums.
+// The tyre at one frequency: the modal compliances of all modes, then cheap modal sums. It
+// refers to its tyre, which must outlive it.
 class TwoLayerResponse final : public SurfaceResponse {
  public:
   std::complex<double> frequency() const override { return omega_; }
