@@ -5,6 +5,7 @@
 #include "core/config_table.hpp"
 #include "core/error.hpp"
 #include "greens/sdof_model.hpp"
+#include "greens/two_layer_factory.hpp"
 
 namespace rollnoise {
 namespace {
@@ -42,6 +43,11 @@ std::unique_ptr<GreensModel> make_greens_model(const ConfigTable& tyre) {
                      "together give rates or compliances outside the range of doubles; use physical values");
   }
   return result;
+}
+
+std::unique_ptr<SurfaceReceptanceModel> make_surface_receptance_model(const ConfigTable& tyre) {
+  tyre.choice("model", {"two_layer"});
+  return std::make_unique<TwoLayerTyre>(read_two_layer_tyre(tyre));
 }
 
 }  // namespace rollnoise
