@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace rollnoise {
 
 class ConfigTable;
@@ -37,12 +39,12 @@ class CentreLineResponse {
   // Receptance α(ω) = u/F in m/N from the force at x = 0 to the response at `distance`;
   // ω = 0 gives the static compliance.
   virtual std::complex<double> receptance(double distance, double omega) const = 0;
-  // The Green's function g(t) in m/(N·s) (the displacement per unit impulse) for t > 0, without
-  // an instantaneous (δ) part, which receptance() includes.
-  virtual double green(double distance, double t) const = 0;
-  // green() at many distances at once (out[i] for distances[i]); models override it when the
-  // time-dependent part can be shared.
-  virtual void green_along(std::span<const double> distances, double t, std::span<double> out) const;
+  // The Green's function in m/(N·s) (the displacement per unit impulse, without an
+  // instantaneous δ part, which receptance() includes) at t_k = (k + 1)·dt, k = 0 … count − 1,
+  // [k][distance]. Models with a closed form give its values at t_k; models transformed from
+  // the frequency domain give the mean over the step ending at t_k (what the contact's step
+  // kernel uses), which description() says.
+  virtual Eigen::MatrixXd green_table(std::span<const double> distances, double dt, int count) const = 0;
 };
 
 // Builds the view of a model file (the keys of a [tyre] table at its top level) with the readers

@@ -182,3 +182,40 @@ TEST(GreensCli, HelpNamesTheOutputs) {
 }
 
 }  // namespace
+
+namespace {
+
+// The two-layer tyre through the same verb (a reduced copy of the passenger file: 17 orders × 3
+// lateral modes, so the test is quick): the tables are written, the static row is real and
+// positive, and the point mobility is passive. The model itself is checked against its
+// references in tests/greens/test_two_layer_*.cpp.
+TEST(GreensCli, TwoLayerTyreTablesArePassiveAndConsistent) {
+  Workspace ws;
+  std::string text = read_text(tyre_file("passenger_205_55R16_two_layer.toml"));
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"circumferential_modes = 256", "circumferential_modes = 16"},
+                                   {"lateral_modes = 25", "lateral_modes = 3"}}) {
+    const auto at = text.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    text.replace(at, key.size(), value);
+  }
+  ws.write("two_layer.toml", text);
+  const RunResult r = ws.run({"greens", "two_layer.toml", "--out", "g", "--frequencies", "0:2000:41", "--distances", "0,0.1"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<Row> receptance = read_rows(ws.path("g") / "receptance.csv");
+  const std::vector<Row> mobility = read_rows(ws.path("g") / "mobility.csv");
+  ASSERT_EQ(receptance.size(), 82u);
+  EXPECT_GT(receptance[0].v.real(), 0.0);
+  EXPECT_LT(std::abs(receptance[0].v.imag()), 1e-12 * receptance[0].v.real());
+  for (const Row& row : mobility) {
+    if (row.d == 0.0) {
+      EXPECT_GE(row.v.real(), -1e-12 * std::abs(row.v)) << row.f;
+    }
+  }
+  const nlohmann::json summary = nlohmann::json::parse(read_text(ws.path("g") / "summary.json"));
+  EXPECT_EQ(summary["model"], "two_layer");
+  EXPECT_TRUE(contains(summary["description"].get<std::string>(), "cell"));
+  EXPECT_TRUE(fs::exists(ws.path("g") / "greens.h5"));
+  EXPECT_TRUE(fs::exists(ws.path("g") / "greens_circumference.csv"));
+}
+
+}  // namespace

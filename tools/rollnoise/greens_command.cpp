@@ -219,14 +219,10 @@ int run_greens(const GreensOptions& options) {
     around = response->default_distances();
   }
   const double dt = 0.5 / top_hz;
-  Eigen::VectorXd time(200);
-  Eigen::MatrixXd green(time.size(), static_cast<Eigen::Index>(around.size()));
-  std::vector<double> row(around.size());
-  for (Eigen::Index k = 0; k < time.size(); ++k) {
-    time(k) = static_cast<double>(k + 1) * dt;
-    response->green_along(around, time(k), row);
-    for (std::size_t j = 0; j < around.size(); ++j) green(k, static_cast<Eigen::Index>(j)) = row[j];
-  }
+  constexpr int kTimeSamples = 200;
+  Eigen::VectorXd time(kTimeSamples);
+  for (Eigen::Index k = 0; k < time.size(); ++k) time(k) = static_cast<double>(k + 1) * dt;
+  const Eigen::MatrixXd green = response->green_table(around, dt, kTimeSamples);
 
   const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
   StagedOutputDirectory staged(out);
