@@ -79,4 +79,30 @@ Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_acros
   return m;
 }
 
+Eigen::SparseMatrix<double> tread_to_tread_matrix(const TyreSurfaceMesh& from, const TyreSurfaceMesh& to) {
+  const int across = to.tread_across;
+  if (from.tread_across != across || from.tread_row_edges.size() != to.tread_row_edges.size())
+    throw std::invalid_argument("tread resampling: the meshes must have the same rows across");
+  for (std::size_t c = 0; c < to.tread_row_edges.size(); ++c)
+    if (!(std::abs(from.tread_row_edges[c] - to.tread_row_edges[c]) <= 1e-12))
+      throw std::invalid_argument("tread resampling: the meshes must have the same rows across");
+  const std::vector<double>& f = from.tread_angle_edges;
+  const std::vector<double>& t = to.tread_angle_edges;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int a = 0; a < to.tread_around; ++a) {
+    const double t0 = t[static_cast<std::size_t>(a)], t1 = t[static_cast<std::size_t>(a) + 1];
+    for (int b = 0; b < from.tread_around; ++b)
+      for (int turn = -1; turn <= 1; ++turn) {
+        const double f0 = f[static_cast<std::size_t>(b)] + turn * kTwoPi, f1 = f[static_cast<std::size_t>(b) + 1] + turn * kTwoPi;
+        const double common = std::min(t1, f1) - std::max(t0, f0);
+        if (common <= 1e-12 * (t1 - t0)) continue;
+        for (int c = 0; c < across; ++c)
+          entries.emplace_back(a + to.tread_around * c, b + from.tread_around * c, common / (t1 - t0));
+      }
+  }
+  Eigen::SparseMatrix<double> m(to.tread_points, from.tread_points);
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
+}
+
 }  // namespace rollnoise

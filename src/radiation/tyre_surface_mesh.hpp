@@ -95,6 +95,12 @@ struct TyreSurfaceMeshSpec {
   // wide (1: uniform); the cells grow by contact_growth per cell away from them (1 < growth ≤ 2).
   double contact_refinement = 1.0;
   double contact_growth = 1.2;
+  // Nested refinement along the tread: each cell of the partition above (uniform or graded)
+  // split into this many equal cells, so the coarser mesh's cells are unions of this one's (the
+  // radiation stage's finer meshes for its upper anchors, tyre_radiation.hpp). The sidewall rings
+  // then have around·tread_split points on the circumference of the rim, and the uniform source
+  // depth is that of the split spacing.
+  int tread_split = 1;
 };
 
 // The surface of the (deformed or undeformed) tyre as a function of the material angle ψ and y.
@@ -147,6 +153,7 @@ struct TyreSurfaceMesh {
   Eigen::Matrix3Xd normals;  // outward unit normals
   Eigen::VectorXd areas;     // surface element of each point, m²
   Eigen::Matrix3Xd sources;  // equivalent source positions, m
+  Eigen::Matrix3Xd source_normals;  // the outward normal of the collocation point each source is under
   int tread_points = 0;      // the first tread_points columns are the tread band, index a + Na·b
   int tread_around = 0;      // Na
   int tread_across = 0;      // Nb

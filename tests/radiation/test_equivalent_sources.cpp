@@ -114,7 +114,7 @@ TEST(EquivalentSources, PowerOfAMonopoleOverARigidPlane) {
       const double k = omega / kAir.sound_speed;
       const double w0 = kAir.density * kAir.sound_speed * k * k * std::norm(q) / (8 * kPi);
       const double expected = w0 * (1.0 + std::sin(2 * k * h) / (2 * k * h));
-      const double w = 0.5 * std::norm(q) * model.power_matrix(omega)(0, 0);
+      const double w = 0.5 * std::norm(q) * model.power_matrix(omega)(0, 0).real();
       EXPECT_NEAR(w, expected, 1e-12 * expected) << "h = " << h << ", f = " << f;
     }
   }
@@ -181,7 +181,10 @@ TEST(EquivalentSources, MirrorSplitSolveEqualsTheFullSolve) {
         const double transfer_error = relative_difference(split.transfer(omega, receivers), full.transfer(omega, receivers));
         const double strength_error = relative_difference(s.strengths(v), r.strengths(v));
         EXPECT_LE(transfer_error, 1e-9) << "f = " << f << ", plane " << rigid_plane << ", on the plane " << on_plane;
-        EXPECT_LE(strength_error, 1e-9) << "f = " << f << ", plane " << rigid_plane << ", on the plane " << on_plane;
+        // The strengths along the weakest directions are fixed only to κ(VᴴV)·ε by the normal
+        // equations (least_squares.hpp; κ ≈ 1e7 here at 300 Hz): measured 1.2e-9 apart. What
+        // they radiate (the transfer above) agrees to rounding.
+        EXPECT_LE(strength_error, 1e-8) << "f = " << f << ", plane " << rigid_plane << ", on the plane " << on_plane;
         EXPECT_LE(std::abs(split.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows())) -
                            full.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows()))),
                   1e-9 * std::abs(full.sound_power(omega, v.col(0), Eigen::VectorXd::Ones(v.rows()))));

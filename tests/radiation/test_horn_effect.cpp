@@ -34,6 +34,7 @@
 #include <gtest/gtest.h>
 
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/tyre_radiation.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 #include "cell_average.hpp"
 
@@ -87,7 +88,7 @@ HornResult solve_horn(const TyreSurfaceMeshSpec& spec, double f) {
   const double edge = deformed ? 0.5 * spec.deformation.patch_length : 0.0;
   const Eigen::Vector3d horn_source = kHornSource + Eigen::Vector3d(edge, 0.0, 0.0);
   const Eigen::Vector3d inside = deformed ? Eigen::Vector3d(edge, 0.0, spec.clearance + 0.01) : kInsideNearContact;
-  const EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true);
+  const EquivalentSources model = make_tyre_model(mesh);  // as the radiation stage solves it
   const Medium air;
   const double omega = 2 * kPi * f, k = omega / air.sound_speed;
   const Complex iwr(0.0, omega * air.density);
