@@ -9,9 +9,9 @@
 // Method. The normal equations (AᴴA + λ²I) q = Aᴴb, by a Hermitian rank-k update (zherk) and
 // a Cholesky factorisation (zpotrf): for m = 2n a third of the flops of the Householder QR of
 // [A; λI], in faster kernels. They square the condition number, so they are kept only when the
-// condition estimate of AᴴA + λ²I (zpocon) is at most 1e9 (errors ≲ 1e-7 relative in q; the
-// tyre's systems have κ(A) of a few hundred, κ² ~ 1e5); otherwise the Householder QR of [A; λI]
-// (zgeqrf) is used, as before.
+// condition estimate of AᴴA + λ²I (zpocon) is at most 1e11 (errors ≲ 1e-5 relative in q along
+// its weakest directions, far less in the field q makes; the tyre's meshes are at 1e7–1e9);
+// otherwise the Householder QR of [A; λI] (zgeqrf) is used, as before.
 //
 // Determinism: the BLAS runs single-threaded (use_single_threaded_blas; the radiation stage runs
 // its anchors on threads of its own), so results do not depend on the number of threads.

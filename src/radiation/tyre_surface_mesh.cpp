@@ -298,12 +298,23 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
     widths = patch;
     widths.insert(widths.end(), outside.begin(), outside.end());
     start = -psi0;
-    mesh.patch_cells = static_cast<int>(patch.size()) * split;
+    mesh.patch_cells = static_cast<int>(patch.size());
   }
   if (split > 1) {
+    // Each cell in `split` equal parts, but none finer than the finest cell of the unsplit
+    // partition (the contact refinement's): the graded cells at the contact keep their size, so
+    // the sources under them stay about as far apart as they are deep (halving them put the
+    // sources 8 spacings deep there and the system's condition number near 1e7).
+    const double finest = dphi / std::max(s.contact_refinement, static_cast<double>(split));
     std::vector<double> whole = std::move(widths);
     widths.clear();
-    for (double w : whole) widths.insert(widths.end(), static_cast<std::size_t>(split), w / split);
+    int patch = 0;
+    for (std::size_t a = 0; a < whole.size(); ++a) {
+      const int parts = std::min(split, std::max(1, static_cast<int>(std::floor(whole[a] / finest + 1e-9))));
+      widths.insert(widths.end(), static_cast<std::size_t>(parts), whole[a] / parts);
+      if (static_cast<int>(a) < mesh.patch_cells) patch += parts;
+    }
+    mesh.patch_cells = patch;
   }
   const auto around = static_cast<int>(widths.size());
   std::vector<double> edges(widths.size() + 1);

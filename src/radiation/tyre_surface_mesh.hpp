@@ -96,7 +96,8 @@ struct TyreSurfaceMeshSpec {
   double contact_refinement = 1.0;
   double contact_growth = 1.2;
   // Nested refinement along the tread: each cell of the partition above (uniform or graded)
-  // split into this many equal cells, so the coarser mesh's cells are unions of this one's (the
+  // split into this many equal cells (fewer where they would be finer than the partition's
+  // finest, the contact refinement's), so the coarser mesh's cells are unions of this one's (the
   // radiation stage's finer meshes for its upper anchors, tyre_radiation.hpp). The sidewall rings
   // then have around·tread_split points on the circumference of the rim, and the uniform source
   // depth is that of the split spacing.

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/tyre_radiation.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 
 namespace rollnoise {
@@ -123,7 +124,7 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
     const char* name;
     TyreSurfaceMeshSpec spec;
   };
-  std::vector<Case> cases(8);
+  std::vector<Case> cases(10);
   cases[0].name = "default";
   cases[1].name = "graded, 16 across";
   cases[1].spec.contact_refinement = 10.0;
@@ -147,6 +148,14 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
   cases[7].name = "33 around, 9 rings";  // sidewalls with an odd number of points
   cases[7].spec.around = 33;
   cases[7].spec.sidewall_rings = 9;
+  cases[8].name = "deformed, graded, 16 across";  // the runs' base mesh
+  cases[8].spec.geometry = TyreGeometry::deformed;
+  cases[8].spec.contact_refinement = 10.0;
+  cases[8].spec.across = 16;
+  cases[9].name = "deformed, graded, tread split in 2, 21 rings";  // the runs' mesh above 4.1 kHz
+  cases[9].spec = cases[8].spec;
+  cases[9].spec.tread_split = 2;
+  cases[9].spec.sidewall_rings = 21;
   for (const Case& c : cases) {
     const TyreSurfaceMesh mesh = make_tyre_surface_mesh(c.spec);
     const double tolerance = 1e-10 * (mesh.points.rowwise().maxCoeff() - mesh.points.rowwise().minCoeff()).norm();
@@ -156,10 +165,18 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
     ASSERT_TRUE(sources.has_value()) << c.name;
     // An odd count across puts one tread row on the plane, mapped to itself.
     EXPECT_EQ(static_cast<int>(points->fixed.size()), c.spec.across % 2 == 1 ? mesh.tread_around : 0) << c.name;
-    // About one source per stride points.
+    // About one source per stride points: within one per tread row and two per sidewall ring
+    // (the x-mirror pairs are chosen together, so a row or ring can gain or lose one).
     EXPECT_NEAR(static_cast<double>(mesh.sources.cols()), static_cast<double>(mesh.points.cols()) / c.spec.source_stride,
-                static_cast<double>(c.spec.across + 2)) << c.name;
+                static_cast<double>(c.spec.across + 2 + 2 * c.spec.sidewall_rings)) << c.name;
     EXPECT_TRUE(EquivalentSources(mesh.sources, mesh.points, mesh.normals, true).mirror_symmetric()) << c.name;
+    // And under x → −x (the plane through the axle across the road), sources and their normals
+    // included: the solve splits into four (symmetry_basis.hpp).
+    const auto across_road = reflection_partners(mesh.points, mesh.normals, 0, tolerance);
+    ASSERT_TRUE(across_road.has_value()) << c.name;
+    ASSERT_TRUE(reflection_partners(mesh.sources, mesh.source_normals, 0, tolerance).has_value()) << c.name;
+    EXPECT_EQ(EquivalentSources(mesh.sources, mesh.points, mesh.normals, true).symmetry_blocks(), 4) << c.name;
+    EXPECT_EQ(make_tyre_model(mesh).symmetry_blocks(), 4) << c.name;
   }
 }
 
