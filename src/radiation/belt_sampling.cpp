@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace rollnoise {
@@ -88,17 +89,23 @@ Eigen::SparseMatrix<double> tread_to_tread_matrix(const TyreSurfaceMesh& from, c
       throw std::invalid_argument("tread resampling: the meshes must have the same rows across");
   const std::vector<double>& f = from.tread_angle_edges;
   const std::vector<double>& t = to.tread_angle_edges;
+  // The overlaps in angle, each row normalised to sum 1 (the meshes' edges, accumulated cell by
+  // cell, agree only to rounding; slivers of that size are left out).
   std::vector<Eigen::Triplet<double>> entries;
   for (int a = 0; a < to.tread_around; ++a) {
     const double t0 = t[static_cast<std::size_t>(a)], t1 = t[static_cast<std::size_t>(a) + 1];
+    std::vector<std::pair<int, double>> row;
+    double total = 0.0;
     for (int b = 0; b < from.tread_around; ++b)
       for (int turn = -1; turn <= 1; ++turn) {
         const double f0 = f[static_cast<std::size_t>(b)] + turn * kTwoPi, f1 = f[static_cast<std::size_t>(b) + 1] + turn * kTwoPi;
         const double common = std::min(t1, f1) - std::max(t0, f0);
-        if (common <= 1e-12 * (t1 - t0)) continue;
-        for (int c = 0; c < across; ++c)
-          entries.emplace_back(a + to.tread_around * c, b + from.tread_around * c, common / (t1 - t0));
+        if (common <= 1e-9 * (t1 - t0)) continue;
+        row.emplace_back(b, common);
+        total += common;
       }
+    for (const auto& [b, common] : row)
+      for (int c = 0; c < across; ++c) entries.emplace_back(a + to.tread_around * c, b + from.tread_around * c, common / total);
   }
   Eigen::SparseMatrix<double> m(to.tread_points, from.tread_points);
   m.setFromTriplets(entries.begin(), entries.end());
