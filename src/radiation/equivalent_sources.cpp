@@ -208,6 +208,21 @@ EquivalentSources::EquivalentSources(Eigen::Matrix3Xd sources, Eigen::Matrix3Xd 
   source_basis_ = std::make_shared<const SymmetryBasis>(std::move(source_generators));
 }
 
+void EquivalentSources::set_collocation_weights(const Eigen::VectorXd& weights) {
+  if (weights.size() == 0) {
+    row_scale_.resize(0);
+    return;
+  }
+  if (weights.size() != surface_.cols() || !(weights.minCoeff() > 0.0) || !weights.allFinite())
+    throw std::invalid_argument("equivalent sources: one positive weight per collocation point");
+  if (point_basis_)
+    for (const SymmetryBasis::Orbit& orbit : point_basis_->orbits())
+      for (const SymmetryBasis::Member& m : orbit.members)
+        if (std::abs(weights(m.point) - weights(orbit.members.front().point)) > 1e-9 * weights(orbit.members.front().point))
+          throw std::invalid_argument("equivalent sources: the weights must be equal at mirror partners");
+  row_scale_ = weights.cwiseSqrt();
+}
+
 Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k) const {
   std::vector<Eigen::Index> all(static_cast<std::size_t>(surface_.cols()));
   std::iota(all.begin(), all.end(), Eigen::Index{0});
@@ -231,7 +246,7 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<
     for (Eigen::Index i = 0; i < count; ++i) {
       Complex value = kernel.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
       if (rigid_plane_) value += kernel.velocity(x.col(i).data(), n.col(i).data(), image.data(), image_normal.data());
-      column[i] = value;
+      column[i] = row_scale_.size() ? row_scale_(rows[static_cast<std::size_t>(i)]) * value : value;
     }
   }
   return v;
@@ -298,9 +313,10 @@ double EquivalentSourceSolve::reciprocal_condition() const noexcept {
 }
 
 // Split: q = Σ_c W_c q_c with q_c the block's solution for U_cᵀv.
-Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& normal_velocities) const {
-  if (normal_velocities.rows() != surface_points_)
+Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& velocities) const {
+  if (velocities.rows() != surface_points_)
     throw std::invalid_argument("equivalent sources: one velocity per surface point");
+  const Eigen::MatrixXcd normal_velocities = row_scale_.size() ? Eigen::MatrixXcd(row_scale_.asDiagonal() * velocities) : velocities;
   if (!point_basis_) return factors_[0]->solve(normal_velocities);
   std::vector<Eigen::MatrixXcd> parts;
   for (int c = 0; c < point_basis_->characters(); ++c) {
@@ -314,6 +330,12 @@ Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& normal
 // Split: V⁺ = Σ_c W_c V_c⁺ U_cᵀ, so X V⁺ = Σ_c ((X W_c) V_c⁺) U_cᵀ, the bases applied to the
 // transposes (X W_c = (W_cᵀXᵀ)ᵀ).
 Eigen::MatrixXcd EquivalentSourceSolve::transfer(const Eigen::MatrixXcd& rows_per_source) const {
+  Eigen::MatrixXcd t = unweighted_transfer(rows_per_source);
+  if (row_scale_.size()) t = t * row_scale_.asDiagonal();
+  return t;
+}
+
+Eigen::MatrixXcd EquivalentSourceSolve::unweighted_transfer(const Eigen::MatrixXcd& rows_per_source) const {
   if (rows_per_source.cols() != source_count_)
     throw std::invalid_argument("equivalent sources: one column per source");
   if (!point_basis_) return factors_[0]->apply_pseudo_inverse_right(rows_per_source);
@@ -343,6 +365,7 @@ EquivalentSourceSolve EquivalentSources::solve(double omega, double regularisati
     EquivalentSourceSolve out;
     out.surface_points_ = surface_.cols();
     out.source_count_ = sources_.cols();
+    out.row_scale_ = row_scale_;
     out.factors_.emplace_back(std::in_place, velocity_matrix(k), method_);
     RegularisedLeastSquares& f = *out.factors_.back();
     f.factorise(regularisation * std::sqrt(f.largest_singular_value_squared(Eigen::VectorXcd::Ones(sources_.cols()))));
@@ -358,6 +381,7 @@ EquivalentSourceSolve EquivalentSources::solve(double omega, double regularisati
   out.source_count_ = sources.size();
   out.point_basis_ = point_basis_;
   out.source_basis_ = source_basis_;
+  out.row_scale_ = row_scale_;
   for (int c = 0; c < points.characters(); ++c) {
     const std::vector<Eigen::Index>& row_orbits = points.block(c);
     const std::vector<Eigen::Index>& column_orbits = sources.block(c);

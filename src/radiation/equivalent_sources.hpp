@@ -77,7 +77,7 @@ class EquivalentSourceSolve {
                         std::vector<Eigen::MatrixXcd> blocks, double lambda);
 
   // Source strengths for surface velocities: M × K → Ns × K.
-  Eigen::MatrixXcd strengths(const Eigen::MatrixXcd& normal_velocities) const;
+  Eigen::MatrixXcd strengths(const Eigen::MatrixXcd& velocities) const;
   // The operator from surface velocities to what the rows measure: given K × Ns (a quantity
   // per unit source strength, such as receiver pressures), returns K × M, rows · V⁺.
   Eigen::MatrixXcd transfer(const Eigen::MatrixXcd& rows_per_source) const;
@@ -93,11 +93,13 @@ class EquivalentSourceSolve {
  private:
   friend class EquivalentSources;
   EquivalentSourceSolve() = default;
+  Eigen::MatrixXcd unweighted_transfer(const Eigen::MatrixXcd& rows_per_source) const;
 
   Eigen::Index surface_points_ = 0;
   Eigen::Index source_count_ = 0;
   std::shared_ptr<const SymmetryBasis> point_basis_, source_basis_;  // split only
   std::vector<std::optional<RegularisedLeastSquares>> factors_;      // per block; empty: no unknowns or no rows
+  Eigen::VectorXd row_scale_;  // √w of the collocation weights (empty: unweighted)
 };
 
 // Equivalent sources as combined sources (Brakhage & Werner's combined potential as point
@@ -169,6 +171,11 @@ class EquivalentSources {
   int symmetry_blocks() const noexcept { return point_basis_ ? point_basis_->characters() : 1; }
   // How solve() solves the least-squares problems (least_squares.hpp; default automatic).
   void set_least_squares_method(LeastSquaresMethod method) noexcept { method_ = method; }
+  // Weights of the collocation points in the least squares, min Σ w_m |(Vq − v)_m|² (default:
+  // all 1). With the points' areas the fit is that of the velocity over the surface, not over
+  // the points: on a mesh graded towards the contact, unweighted, the 2 mm cells there count as
+  // much as the 2 cm ones. Must be positive and, on a split solve, equal at mirror partners.
+  void set_collocation_weights(const Eigen::VectorXd& weights);
 
  private:
   // −∂G/∂n at the collocation points `rows` (all: M × Ns).
@@ -186,6 +193,7 @@ class EquivalentSources {
   std::shared_ptr<const SymmetryBasis> point_basis_, source_basis_;  // both set, or neither
   bool mirror_y_ = false;
   LeastSquaresMethod method_ = LeastSquaresMethod::automatic;
+  Eigen::VectorXd row_scale_;  // √w (empty: unweighted)
 };
 
 }  // namespace rollnoise

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -83,12 +84,14 @@ TyreRadiation::TyreRadiation(const TyreRadiationSettings& settings, Eigen::Matri
     throw std::invalid_argument("tyre radiation: the maximum frequency must be above 20 Hz");
   if (!(settings_.anchor_spacing_hz >= 5.0 && settings_.anchor_spacing_hz <= 1000.0))
     throw std::invalid_argument("tyre radiation: the anchor spacing must be within 5 ... 1000 Hz");
+  if (!(settings_.combined_sources_above_hz >= 0.0)) throw std::invalid_argument("tyre radiation: combined_sources_above_hz must be >= 0");
   if (settings_.threads < 0) throw std::invalid_argument("tyre radiation: threads must be >= 0");
   if (receivers_.cols() == 0) throw std::invalid_argument("tyre radiation: no receivers");
   for (const RadiationMeshLevel& level : radiation_mesh_levels(settings_)) {
     TyreSurfaceMesh mesh = make_tyre_surface_mesh(level.spec);
-    EquivalentSources model = make_tyre_model(mesh, settings_.medium, settings_.combined_sources);
-    levels_.push_back({level.top_hz, std::move(mesh), std::move(model), {}});
+    EquivalentSources monopoles = make_tyre_model(mesh, settings_.medium, false);
+    EquivalentSources combined = make_tyre_model(mesh, settings_.medium, true);
+    levels_.push_back({level.top_hz, level.spec, std::move(mesh), std::move(monopoles), std::move(combined), {}});
   }
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) levels_[l].from_input = tread_to_tread_matrix(input_mesh(), levels_[l].mesh);
   centre_ = Eigen::Vector3d(0.0, 0.0, input_mesh().axle_height);
@@ -153,13 +156,21 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   // is ½qᴴSq·4/(N·L) with q the sources for the raw bin X_k (N samples, L the transform length).
   const double power_scale = 4.0 / (static_cast<double>(samples) * length);
   std::vector<AnchorResult> results(anchor.size());
+  std::vector<double> seconds(anchor.size(), 0.0);
   const auto solve_anchor = [&](std::size_t a) {
+    const auto started = std::chrono::steady_clock::now();
+    struct Clock {
+      std::chrono::steady_clock::time_point started;
+      double& seconds;
+      ~Clock() { seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
+    } clock{started, seconds[a]};
     const double omega = kTwoPi * anchor[a];
     const Level& level = levels_[level_of(anchor[a])];
     const bool own = &level == &levels_.back();  // the input mesh itself
-    const EquivalentSourceSolve solve = level.model.solve(omega, settings_.regularisation);
+    const EquivalentSources& model = anchor[a] > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
+    const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
     AnchorResult& out = results[a];
-    const Eigen::MatrixXcd transfer = solve.transfer(level.model.pressure_matrix(omega, receivers_));
+    const Eigen::MatrixXcd transfer = solve.transfer(model.pressure_matrix(omega, receivers_));
     if (own)
       out.transfer = transfer.leftCols(active);
     else
@@ -177,7 +188,7 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
       else
         velocities.col(c).head(level.mesh.tread_points) = level.from_input * spectra.col(out.bins[i]);
     }
-    const Eigen::VectorXd power = level.model.radiated_power(omega, solve.strengths(velocities));
+    const Eigen::VectorXd power = model.radiated_power(omega, solve.strengths(velocities));
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const double f = frequency(out.bins[i]);
       const double hat = f < anchor[a] ? (f - below) / (anchor[a] - below)
@@ -226,6 +237,9 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   out.lowest_hz = anchor.front();
   out.highest_hz = anchor.back();
   out.delays_s = propagation_delays(receivers_, centre_, settings_.medium.sound_speed);
+  out.anchors_hz = anchor;
+  for (double f : anchor) out.anchor_mesh.push_back(level_of(f));
+  out.anchor_seconds = seconds;
   out.frequency_hz.resize(band);
   for (Eigen::Index b = 0; b < band; ++b) out.frequency_hz(b) = frequency(b);
   out.sound_power_w = Eigen::VectorXd::Zero(band);
