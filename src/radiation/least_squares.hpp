@@ -10,7 +10,7 @@
 // a Cholesky factorisation (zpotrf): for m = 2n a third of the flops of the Householder QR of
 // [A; λI], in faster kernels. They square the condition number, so they are kept only when the
 // condition estimate of AᴴA + λ²I (zpocon) is at most 1e11 (errors ≲ 1e-5 relative in q along
-// its weakest directions, far less in the field q makes; the tyre's meshes are at 1e7–1e9);
+// its weakest directions, far less in the field q makes; the tyre's meshes are at 1e6–1e9);
 // otherwise the Householder QR of [A; λI] (zgeqrf) is used, as before.
 //
 // Determinism: the BLAS runs single-threaded (use_single_threaded_blas; the radiation stage runs

@@ -6,7 +6,7 @@
 // Method. The velocities are Fourier transformed (zero-padded, so the convolution with the
 // receivers' responses is linear, not circular); at each frequency bin the equivalent-source
 // model of the tyre over the rigid road (equivalent_sources.hpp, tyre_surface_mesh.hpp) maps
-// them to pressures and power. Solving that model costs seconds per frequency, so it is solved
+// them to pressures and power. Solving that model costs 0.2–5 s per frequency, so it is solved
 // at anchor frequencies, in parallel, and interpolated between them:
 //  - receiver pressures through TransferTable (the propagation delay taken out, so the signals
 //    come out in retarded time: sample n is the sound the tyre emitted at step n);

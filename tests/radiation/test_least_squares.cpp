@@ -71,7 +71,7 @@ TEST(LeastSquares, IllConditionedProblemsTakeTheQr) {
   EXPECT_THROW(RegularisedLeastSquares(Eigen::MatrixXcd(0, 3)), std::invalid_argument);
 }
 
-// The stage's meshes are well enough conditioned for the normal equations (κ(VᴴV) 1e7–1e9), and
+// The stage's meshes are well enough conditioned for the normal equations (κ(VᴴV) 1e6–1e9), and
 // on them the transfer to the receivers is the QR's to far better than the mesh's own error.
 TEST(LeastSquares, TyreMeshTransfersByNormalEquationsAreTheQrs) {
   TyreSurfaceMeshSpec spec;
