@@ -39,8 +39,10 @@
 // to two point spacings, the usual choice that keeps the least-squares problem well
 // conditioned while the sources still resolve the surface's detail. Points, normals and sources
 // are mirror-symmetric about the centre plane y = 0 for every spec (an odd `across` puts a
-// tread row on the plane, mapped to itself), so the equivalent-source solve splits into two
-// half-size problems (equivalent_sources.hpp, MirrorPairing).
+// tread row on the plane, mapped to itself) and about the plane x = 0 through the axle (the
+// patch is centred under it; the sources are chosen by x-mirror pairs of cells), so the
+// equivalent-source solve splits into four quarter-size problems (symmetry_basis.hpp).
+// source_normals holds each source's cell normal, for combined sources (equivalent_sources.hpp).
 //
 // Graded tread (contact_refinement > 1). The horn between tread and road is a wedge a few mm
 // high near where the tread leaves the road: a uniform 2 cm mesh does not see it, and a source
