@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace rollnoise {
@@ -75,6 +76,38 @@ Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_acros
     for (const Overlap& c : across)
       entries.emplace_back(a.coarse + mesh_around * c.coarse, c.fine + belt_across * a.fine, a.fraction * c.fraction);
   Eigen::SparseMatrix<double> m(mesh_around * mesh_across, belt_around * belt_across);
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
+}
+
+Eigen::SparseMatrix<double> tread_to_tread_matrix(const TyreSurfaceMesh& from, const TyreSurfaceMesh& to) {
+  const int across = to.tread_across;
+  if (from.tread_across != across || from.tread_row_edges.size() != to.tread_row_edges.size())
+    throw std::invalid_argument("tread resampling: the meshes must have the same rows across");
+  for (std::size_t c = 0; c < to.tread_row_edges.size(); ++c)
+    if (!(std::abs(from.tread_row_edges[c] - to.tread_row_edges[c]) <= 1e-12))
+      throw std::invalid_argument("tread resampling: the meshes must have the same rows across");
+  const std::vector<double>& f = from.tread_angle_edges;
+  const std::vector<double>& t = to.tread_angle_edges;
+  // The overlaps in angle, each row normalised to sum 1 (the meshes' edges, accumulated cell by
+  // cell, agree only to rounding; slivers of that size are left out).
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int a = 0; a < to.tread_around; ++a) {
+    const double t0 = t[static_cast<std::size_t>(a)], t1 = t[static_cast<std::size_t>(a) + 1];
+    std::vector<std::pair<int, double>> row;
+    double total = 0.0;
+    for (int b = 0; b < from.tread_around; ++b)
+      for (int turn = -1; turn <= 1; ++turn) {
+        const double f0 = f[static_cast<std::size_t>(b)] + turn * kTwoPi, f1 = f[static_cast<std::size_t>(b) + 1] + turn * kTwoPi;
+        const double common = std::min(t1, f1) - std::max(t0, f0);
+        if (common <= 1e-9 * (t1 - t0)) continue;
+        row.emplace_back(b, common);
+        total += common;
+      }
+    for (const auto& [b, common] : row)
+      for (int c = 0; c < across; ++c) entries.emplace_back(a + to.tread_around * c, b + from.tread_around * c, common / total);
+  }
+  Eigen::SparseMatrix<double> m(to.tread_points, from.tread_points);
   m.setFromTriplets(entries.begin(), entries.end());
   return m;
 }

@@ -27,4 +27,11 @@ namespace rollnoise {
 // tread layout is inconsistent.
 Eigen::SparseMatrix<double> belt_to_tread_matrix(int belt_around, int belt_across, const TyreSurfaceMesh& mesh);
 
+// From one tread mesh to another with the same rows across (the radiation stage's meshes of one
+// run, tyre_radiation.hpp): each cell of `to` takes the mean of the cells of `from` over its
+// material angles, weighted by their overlap (Na_to·Nb × Na_from·Nb). When the cells of `to` are
+// unions of those of `from` (TyreSurfaceMeshSpec::tread_split), belt → from → to equals
+// belt → to: area-weighted means compose.
+Eigen::SparseMatrix<double> tread_to_tread_matrix(const TyreSurfaceMesh& from, const TyreSurfaceMesh& to);
+
 }  // namespace rollnoise

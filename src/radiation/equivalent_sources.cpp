@@ -26,14 +26,68 @@ Eigen::Vector3cd free_gradient(const Eigen::Vector3d& x, const Eigen::Vector3d& 
 }
 
 Eigen::Vector3d mirrored(const Eigen::Vector3d& s) { return {s.x(), s.y(), -s.z()}; }
-// The other mirror, y → −y (the tyre's centre plane).
-Eigen::Vector3d mirrored_across(const Eigen::Vector3d& s) { return {s.x(), -s.y(), s.z()}; }
+
+// The field of one equivalent source of unit strength at s (normal n_s), per iωρ, and the normal
+// velocity it makes at x (normal n_x). Monopole: Ψ = G. Combined: Ψ = ∂G/∂n_s + iηkG
+// = −n_s·∇_x G + iηkG. With G = e^{−ikr}/(4πr), d = x − s, û = d/r:
+//   ∇_x G = G′û,  G′ = (−ik − 1/r)G,  G″ = (−k² + 2ik/r + 2/r²)G,
+//   Hessian H = (G′/r)(I − ûûᵀ) + G″ûûᵀ,
+//   velocity −n_x·∇_x Ψ: monopole −G′(n_x·û); combined n_xᵀHn_s − iηkG′(n_x·û).
+struct SourceKernel {
+  double k = 0.0;
+  double monopole = 0.0;  // combined: η_k = ηk + η₀, the monopole's weight (1/m)
+  bool combined = false;
+
+  Complex field(const double* x, const double* s, const double* ns) const {
+    const double dx = x[0] - s[0], dy = x[1] - s[1], dz = x[2] - s[2];
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double inverse = 1.0 / r;
+    const Complex g = std::polar(0.25 / std::numbers::pi * inverse, -k * r);
+    if (!combined) return g;
+    const Complex gp = Complex(-inverse, -k) * g;
+    const double su = (ns[0] * dx + ns[1] * dy + ns[2] * dz) * inverse;
+    return -su * gp + Complex(0.0, monopole) * g;
+  }
+
+  Complex velocity(const double* x, const double* nx, const double* s, const double* ns) const {
+    const double dx = x[0] - s[0], dy = x[1] - s[1], dz = x[2] - s[2];
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double inverse = 1.0 / r;
+    const Complex g = std::polar(0.25 / std::numbers::pi * inverse, -k * r);
+    const double nu = (nx[0] * dx + nx[1] * dy + nx[2] * dz) * inverse;
+    // −G′ = (ik + 1/r)G
+    if (!combined) return g * Complex(inverse, k) * nu;
+    const Complex gp = Complex(-inverse, -k) * g;
+    const Complex gpp = Complex(-k * k + 2.0 * inverse * inverse, 2.0 * k * inverse) * g;
+    const double su = (ns[0] * dx + ns[1] * dy + ns[2] * dz) * inverse;
+    const double nn = nx[0] * ns[0] + nx[1] * ns[1] + nx[2] * ns[2];
+    return gp * inverse * (nn - nu * su) + gpp * (nu * su) - Complex(0.0, monopole) * gp * nu;
+  }
+};
+
+// Spherical Bessel functions j0, j1/x and j2 (series below x = 0.1, where the closed forms
+// cancel).
+struct Bessel {
+  double j0, j1, j1_over_x, j2;
+};
+Bessel spherical_bessel(double x) {
+  if (x < 0.1) {
+    const double x2 = x * x;
+    return {1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0)),
+            x / 3.0 * (1.0 - x2 / 10.0 * (1.0 - x2 / 28.0 * (1.0 - x2 / 54.0))),
+            1.0 / 3.0 * (1.0 - x2 / 10.0 * (1.0 - x2 / 28.0 * (1.0 - x2 / 54.0))),
+            x2 / 15.0 * (1.0 - x2 / 14.0 * (1.0 - x2 / 36.0 * (1.0 - x2 / 66.0)))};
+  }
+  const double sn = std::sin(x), cs = std::cos(x);
+  const double j0 = sn / x;
+  const double j1 = (sn / x - cs) / x;
+  return {j0, j1, j1 / x, 3.0 * j1 / x - j0};
+}
 
 // Mirror partners are matched this close, relative to the body's size: they are computed by the
 // same formulas, so exact to rounding; a looser match would make the split solve that of a
 // slightly different (symmetrised) body.
 constexpr double kMirrorTolerance = 1e-10;
-constexpr double kNormalTolerance = 1e-9;
 
 }  // namespace
 
@@ -71,39 +125,13 @@ Eigen::MatrixXcd MirrorPairing::combine(const Eigen::MatrixXcd& even_part, const
   return out;
 }
 
-// Partners share x (and z): the candidates of each point are found by binary search in the
-// points sorted by x, O(N log N) but for columns of equal x (the tread's rows across).
 std::optional<MirrorPairing> find_mirror_pairing(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
                                                  double tolerance) {
-  const Eigen::Index n = points.cols();
-  const bool with_normals = normals.cols() > 0;
-  if (with_normals && normals.cols() != n) throw std::invalid_argument("mirror pairing: one normal per point");
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), Eigen::Index{0});
-  std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return points(0, a) < points(0, b); });
-  std::vector<double> xs;
-  xs.reserve(order.size());
-  for (Eigen::Index i : order) xs.push_back(points(0, i));
-  std::vector<Eigen::Index> partner(static_cast<std::size_t>(n), -1);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d image = mirrored_across(points.col(i));
-    const auto lo = std::lower_bound(xs.begin(), xs.end(), image.x() - tolerance) - xs.begin();
-    const auto hi = std::upper_bound(xs.begin(), xs.end(), image.x() + tolerance) - xs.begin();
-    double best = std::numeric_limits<double>::infinity();
-    for (auto c = lo; c < hi; ++c) {
-      const Eigen::Index j = order[static_cast<std::size_t>(c)];
-      const double d = (points.col(j) - image).norm();
-      if (d > tolerance || d >= best) continue;
-      if (with_normals && (normals.col(j) - mirrored_across(normals.col(i))).norm() > kNormalTolerance) continue;
-      best = d;
-      partner[static_cast<std::size_t>(i)] = j;
-    }
-    if (partner[static_cast<std::size_t>(i)] < 0) return std::nullopt;
-  }
+  const auto partner = reflection_partners(points, normals, 1, tolerance);
+  if (!partner) return std::nullopt;
   MirrorPairing out;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Index j = partner[static_cast<std::size_t>(i)];
-    if (partner[static_cast<std::size_t>(j)] != i) return std::nullopt;  // not one-to-one
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    const Eigen::Index j = (*partner)[static_cast<std::size_t>(i)];
     if (j == i)
       out.fixed.push_back(i);
     else if (i < j)
@@ -126,13 +154,30 @@ Eigen::Vector3cd helmholtz_green_gradient(const Eigen::Vector3d& x, const Eigen:
 }
 
 EquivalentSources::EquivalentSources(Eigen::Matrix3Xd sources, Eigen::Matrix3Xd surface, Eigen::Matrix3Xd normals,
-                                     bool rigid_plane, Medium medium, Symmetry symmetry)
+                                     bool rigid_plane, Medium medium, Symmetry symmetry,
+                                     std::optional<CombinedSources> combined)
     : sources_(std::move(sources)),
       surface_(std::move(surface)),
       normals_(std::move(normals)),
       rigid_plane_(rigid_plane),
       medium_(medium) {
   if (normals_.cols() != surface_.cols()) throw std::invalid_argument("equivalent sources: one normal per surface point");
+  if (combined) {
+    if (combined->normals.cols() != sources_.cols())
+      throw std::invalid_argument("equivalent sources: combined sources need one normal per source");
+    if (!(combined->coupling > 0.0) || !std::isfinite(combined->coupling))
+      throw std::invalid_argument("equivalent sources: the combined sources' coupling must be > 0");
+    for (Eigen::Index j = 0; j < sources_.cols(); ++j)
+      if (!(std::abs(combined->normals.col(j).norm() - 1.0) < 1e-9))
+        throw std::invalid_argument("equivalent sources: the combined sources' normals must be unit vectors");
+    source_normals_ = std::move(combined->normals);
+    coupling_ = combined->coupling;
+    coupling_floor_ = combined->floor;
+    if (!(coupling_floor_ >= 0.0) || !std::isfinite(coupling_floor_))
+      throw std::invalid_argument("equivalent sources: the combined sources' coupling floor must be >= 0");
+  } else {
+    source_normals_ = Eigen::Matrix3Xd::Zero(3, sources_.cols());
+  }
   if (sources_.cols() == 0 || surface_.cols() < sources_.cols())
     throw std::invalid_argument("equivalent sources: need at least as many surface points as sources");
   if (rigid_plane_ && (sources_.row(2).minCoeff() <= 0.0 || surface_.row(2).minCoeff() <= 0.0))
@@ -141,13 +186,41 @@ EquivalentSources::EquivalentSources(Eigen::Matrix3Xd sources, Eigen::Matrix3Xd 
   // The body's size: the diagonal of the box around the collocation points (the sources are inside).
   const double size = (surface_.rowwise().maxCoeff() - surface_.rowwise().minCoeff()).norm();
   const double tolerance = kMirrorTolerance * size;
-  auto points = find_mirror_pairing(surface_, normals_, tolerance);
-  auto sources_paired = find_mirror_pairing(sources_, Eigen::Matrix3Xd(3, 0), tolerance);
-  // Worth splitting (and both halves non-empty) only with pairs in both sets.
-  if (points && sources_paired && points->odd_size() > 0 && sources_paired->odd_size() > 0) {
-    point_pairing_ = std::move(points);
-    source_pairing_ = std::move(sources_paired);
+  std::vector<std::vector<Eigen::Index>> point_generators, source_generators;
+  for (int axis : {1, 0}) {
+    if (axis == 0 && symmetry == Symmetry::centre_plane) continue;
+    auto points = reflection_partners(surface_, normals_, axis, tolerance);
+    auto paired = reflection_partners(sources_, coupling_ > 0.0 ? source_normals_ : Eigen::Matrix3Xd(3, 0), axis, tolerance);
+    if (!points || !paired) continue;
+    // Worth splitting (and every block non-empty) only if it moves some points and some sources.
+    const auto moves = [](const std::vector<Eigen::Index>& p) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p[i] != static_cast<Eigen::Index>(i)) return true;
+      return false;
+    };
+    if (!moves(*points) || !moves(*paired)) continue;
+    point_generators.push_back(std::move(*points));
+    source_generators.push_back(std::move(*paired));
+    if (axis == 1) mirror_y_ = true;
   }
+  if (point_generators.empty()) return;
+  point_basis_ = std::make_shared<const SymmetryBasis>(std::move(point_generators));
+  source_basis_ = std::make_shared<const SymmetryBasis>(std::move(source_generators));
+}
+
+void EquivalentSources::set_collocation_weights(const Eigen::VectorXd& weights) {
+  if (weights.size() == 0) {
+    row_scale_.resize(0);
+    return;
+  }
+  if (weights.size() != surface_.cols() || !(weights.minCoeff() > 0.0) || !weights.allFinite())
+    throw std::invalid_argument("equivalent sources: one positive weight per collocation point");
+  if (point_basis_)
+    for (const SymmetryBasis::Orbit& orbit : point_basis_->orbits())
+      for (const SymmetryBasis::Member& m : orbit.members)
+        if (std::abs(weights(m.point) - weights(orbit.members.front().point)) > 1e-9 * weights(orbit.members.front().point))
+          throw std::invalid_argument("equivalent sources: the weights must be equal at mirror partners");
+  row_scale_ = weights.cwiseSqrt();
 }
 
 Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k) const {
@@ -156,164 +229,272 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k) const {
   return velocity_matrix(k, all);
 }
 
+// −n·∇Ψ for each row and source, and its image's (SourceKernel).
 Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<Eigen::Index>& rows) const {
   const auto count = static_cast<Eigen::Index>(rows.size());
   Eigen::MatrixXcd v(count, sources_.cols());
-  for (Eigen::Index s = 0; s < sources_.cols(); ++s)
+  Eigen::Matrix3Xd x(3, count), n(3, count);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    x.col(i) = surface_.col(rows[static_cast<std::size_t>(i)]);
+    n.col(i) = normals_.col(rows[static_cast<std::size_t>(i)]);
+  }
+  const SourceKernel kernel{k, coupling_ * k + coupling_floor_, coupling_ > 0.0};
+  for (Eigen::Index j = 0; j < sources_.cols(); ++j) {
+    const Eigen::Vector3d s = sources_.col(j), ns = source_normals_.col(j);
+    const Eigen::Vector3d image = mirrored(s), image_normal = mirrored(ns);
+    Complex* column = v.col(j).data();
     for (Eigen::Index i = 0; i < count; ++i) {
-      const Eigen::Index m = rows[static_cast<std::size_t>(i)];
-      // n·∇G. (Eigen's a.dot(b) conjugates a: the real normal goes first.)
-      v(i, s) = -normals_.col(m).cast<Complex>().dot(helmholtz_green_gradient(surface_.col(m), sources_.col(s), k, rigid_plane_));
+      Complex value = kernel.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
+      if (rigid_plane_) value += kernel.velocity(x.col(i).data(), n.col(i).data(), image.data(), image_normal.data());
+      column[i] = row_scale_.size() ? row_scale_(rows[static_cast<std::size_t>(i)]) * value : value;
     }
+  }
   return v;
 }
 
 Eigen::MatrixXcd EquivalentSources::pressure_matrix(double omega, const Eigen::Matrix3Xd& at) const {
   const double k = omega / medium_.sound_speed;
   const Complex factor(0.0, omega * medium_.density);
+  const SourceKernel kernel{k, coupling_ * k + coupling_floor_, coupling_ > 0.0};
   Eigen::MatrixXcd p(at.cols(), sources_.cols());
-  for (Eigen::Index s = 0; s < sources_.cols(); ++s)
-    for (Eigen::Index r = 0; r < at.cols(); ++r) p(r, s) = factor * helmholtz_green(at.col(r), sources_.col(s), k, rigid_plane_);
+  for (Eigen::Index j = 0; j < sources_.cols(); ++j) {
+    const Eigen::Vector3d s = sources_.col(j), ns = source_normals_.col(j);
+    const Eigen::Vector3d image = mirrored(s), image_normal = mirrored(ns);
+    for (Eigen::Index r = 0; r < at.cols(); ++r) {
+      const Eigen::Vector3d x = at.col(r);
+      Complex value = kernel.field(x.data(), s.data(), ns.data());
+      if (rigid_plane_) value += kernel.field(x.data(), image.data(), image_normal.data());
+      p(r, j) = factor * value;
+    }
+  }
   return p;
-}
-
-EquivalentSourceSolve::Factor::Factor(const Eigen::MatrixXcd& matrix, double lambda)
-    : rows(matrix.rows()), columns(matrix.cols()) {
-  Eigen::MatrixXcd augmented(rows + columns, columns);
-  augmented.topRows(rows) = matrix;
-  augmented.bottomRows(columns) = Eigen::MatrixXcd::Identity(columns, columns) * lambda;
-  qr.compute(augmented);
-}
-
-// q = R⁻¹ Qᴴ [v; 0]: the first Ns rows of Qᴴ[v; 0], then back substitution.
-Eigen::MatrixXcd EquivalentSourceSolve::Factor::strengths(const Eigen::MatrixXcd& velocities) const {
-  Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(rows + columns, velocities.cols());
-  padded.topRows(rows) = velocities;
-  padded.applyOnTheLeft(qr.householderQ().adjoint());
-  return qr.matrixQR().topLeftCorner(columns, columns).triangularView<Eigen::Upper>().solve(padded.topRows(columns));
-}
-
-// X V⁺ = (X R⁻¹) Q₁ᴴ with Q₁ the first M rows of Q: (X V⁺)ᴴ = Q₁ (X R⁻¹)ᴴ, i.e. Q applied to
-// (X R⁻¹)ᴴ padded with zeros, first M rows. Cost: K reflector sweeps instead of M.
-Eigen::MatrixXcd EquivalentSourceSolve::Factor::transfer(const Eigen::MatrixXcd& rows_per_source) const {
-  const Eigen::MatrixXcd y = qr.matrixQR()
-                                 .topLeftCorner(columns, columns)
-                                 .triangularView<Eigen::Upper>()
-                                 .adjoint()
-                                 .solve(rows_per_source.adjoint());  // (X R⁻¹)ᴴ = R⁻ᴴ Xᴴ
-  Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(rows + columns, y.cols());
-  padded.topRows(columns) = y;
-  padded.applyOnTheLeft(qr.householderQ());
-  return padded.topRows(rows).adjoint();
 }
 
 EquivalentSourceSolve::EquivalentSourceSolve(const Eigen::MatrixXcd& velocity_matrix, double lambda)
     : surface_points_(velocity_matrix.rows()), source_count_(velocity_matrix.cols()) {
-  factors_.emplace_back(velocity_matrix, lambda);
+  factors_.emplace_back(std::in_place, velocity_matrix);
+  factors_.back()->factorise(lambda);
 }
 
-EquivalentSourceSolve::EquivalentSourceSolve(MirrorPairing points, MirrorPairing sources,
-                                             const Eigen::MatrixXcd& even_matrix, const Eigen::MatrixXcd& odd_matrix,
-                                             double lambda)
-    : surface_points_(points.size()),
-      source_count_(sources.size()),
-      split_(true),
-      point_pairing_(std::move(points)),
-      source_pairing_(std::move(sources)) {
-  if (even_matrix.rows() != point_pairing_.even_size() || even_matrix.cols() != source_pairing_.even_size() ||
-      odd_matrix.rows() != point_pairing_.odd_size() || odd_matrix.cols() != source_pairing_.odd_size())
-    throw std::invalid_argument("equivalent sources: the even and odd blocks do not match the pairings");
-  factors_.emplace_back(even_matrix, lambda);
-  factors_.emplace_back(odd_matrix, lambda);
+EquivalentSourceSolve::EquivalentSourceSolve(std::shared_ptr<const SymmetryBasis> points,
+                                             std::shared_ptr<const SymmetryBasis> sources,
+                                             std::vector<Eigen::MatrixXcd> blocks, double lambda)
+    : surface_points_(points ? points->size() : 0),
+      source_count_(sources ? sources->size() : 0),
+      point_basis_(std::move(points)),
+      source_basis_(std::move(sources)) {
+  if (!point_basis_ || !source_basis_ || point_basis_->characters() != source_basis_->characters() ||
+      static_cast<int>(blocks.size()) != point_basis_->characters())
+    throw std::invalid_argument("equivalent sources: one block per character of matching symmetry bases");
+  for (int c = 0; c < point_basis_->characters(); ++c) {
+    Eigen::MatrixXcd& block = blocks[static_cast<std::size_t>(c)];
+    if (block.rows() != point_basis_->size(c) || block.cols() != source_basis_->size(c))
+      throw std::invalid_argument("equivalent sources: a block does not match the symmetry bases");
+    if (block.rows() == 0 || block.cols() == 0) {
+      factors_.emplace_back();
+      continue;
+    }
+    factors_.emplace_back(std::in_place, std::move(block));
+    factors_.back()->factorise(lambda);
+  }
 }
 
-// Split: q = A q_e + B q_o with q_e, q_o the half problems' solutions for U_eᵀv, U_oᵀv.
-Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& normal_velocities) const {
-  if (normal_velocities.rows() != surface_points_)
+bool EquivalentSourceSolve::normal_equations() const noexcept {
+  for (const auto& f : factors_)
+    if (f && !f->normal_equations()) return false;
+  return true;
+}
+
+double EquivalentSourceSolve::reciprocal_condition() const noexcept {
+  double smallest = 1.0;
+  for (const auto& f : factors_)
+    if (f) smallest = std::min(smallest, f->reciprocal_condition());
+  return smallest;
+}
+
+// Split: q = Σ_c W_c q_c with q_c the block's solution for U_cᵀv.
+Eigen::MatrixXcd EquivalentSourceSolve::strengths(const Eigen::MatrixXcd& velocities) const {
+  if (velocities.rows() != surface_points_)
     throw std::invalid_argument("equivalent sources: one velocity per surface point");
-  if (!split_) return factors_[0].strengths(normal_velocities);
-  return source_pairing_.combine(factors_[0].strengths(point_pairing_.even(normal_velocities)),
-                                 factors_[1].strengths(point_pairing_.odd(normal_velocities)));
+  const Eigen::MatrixXcd normal_velocities = row_scale_.size() ? Eigen::MatrixXcd(row_scale_.asDiagonal() * velocities) : velocities;
+  if (!point_basis_) return factors_[0]->solve(normal_velocities);
+  std::vector<Eigen::MatrixXcd> parts;
+  for (int c = 0; c < point_basis_->characters(); ++c) {
+    const auto& f = factors_[static_cast<std::size_t>(c)];
+    parts.push_back(f ? f->solve(point_basis_->reduce(normal_velocities, c))
+                      : Eigen::MatrixXcd::Zero(source_basis_->size(c), normal_velocities.cols()));
+  }
+  return source_basis_->expand(parts);
 }
 
-// Split: V⁺ = A V_e⁺ U_eᵀ + B V_o⁺ U_oᵀ, so X V⁺ = ((XA) V_e⁺) U_eᵀ + ((XB) V_o⁺) U_oᵀ, the
-// bases applied to the transposes (XA = (AᵀXᵀ)ᵀ).
+// Split: V⁺ = Σ_c W_c V_c⁺ U_cᵀ, so X V⁺ = Σ_c ((X W_c) V_c⁺) U_cᵀ, the bases applied to the
+// transposes (X W_c = (W_cᵀXᵀ)ᵀ).
 Eigen::MatrixXcd EquivalentSourceSolve::transfer(const Eigen::MatrixXcd& rows_per_source) const {
+  Eigen::MatrixXcd t = unweighted_transfer(rows_per_source);
+  if (row_scale_.size()) t = t * row_scale_.asDiagonal();
+  return t;
+}
+
+Eigen::MatrixXcd EquivalentSourceSolve::unweighted_transfer(const Eigen::MatrixXcd& rows_per_source) const {
   if (rows_per_source.cols() != source_count_)
     throw std::invalid_argument("equivalent sources: one column per source");
-  if (!split_) return factors_[0].transfer(rows_per_source);
+  if (!point_basis_) return factors_[0]->apply_pseudo_inverse_right(rows_per_source);
   const Eigen::MatrixXcd xt = rows_per_source.transpose();
-  const Eigen::MatrixXcd even = factors_[0].transfer(source_pairing_.even(xt).transpose());
-  const Eigen::MatrixXcd odd = factors_[1].transfer(source_pairing_.odd(xt).transpose());
-  return point_pairing_.combine(even.transpose(), odd.transpose()).transpose();
+  std::vector<Eigen::MatrixXcd> parts;
+  for (int c = 0; c < point_basis_->characters(); ++c) {
+    const auto& f = factors_[static_cast<std::size_t>(c)];
+    parts.push_back(f ? Eigen::MatrixXcd(f->apply_pseudo_inverse_right(source_basis_->reduce(xt, c).transpose()).transpose())
+                      : Eigen::MatrixXcd::Zero(point_basis_->size(c), rows_per_source.rows()));
+  }
+  return point_basis_->expand(parts).transpose();
 }
 
-// λ is relative to the largest singular value, estimated by power iteration on VᴴV (a few
-// per cent is plenty: it only sets the scale of a tiny regularisation).
+// λ is relative to the largest singular value, estimated by power iteration on VᴴV from ones
+// (a few per cent is plenty: it only sets the scale of a tiny regularisation).
 //
-// Split: V_e and V_o from the rows of V at one point of each pair and the fixed ones (half the
-// Green's functions), by V(m′, s) = V(m, s′):
-//   V_e(m, s) = V(m, s) + V(m, s′), V_e(m, g) = √2·V(m, g), V_o(m, s) = V(m, s) − V(m, s′)
-// for pairs m, s and sources g on the plane, and the rows of points f on the plane divided by √2
-// (there U_eᵀ has 1, not 1/√2 + 1/√2). The full iteration starts from ones, an even vector,
-// and stays even (V commutes with the mirror): the same iteration on V_e from Aᵀ·1 (√2 per
-// pair, 1 per fixed source) gives the same λ to rounding.
+// Split: the blocks from the rows of V at each point orbit's representative (1/2 or 1/4 of the
+// Green's functions), V_c(a, b) = √(|O_a|/|O_b|) Σ_{y ∈ O_b} χ_c(g_y) V(r_a, y)
+// (symmetry_basis.hpp). The full iteration starts from ones, an invariant vector, and stays in
+// the trivial character's subspace (V commutes with the group): the same iteration on that
+// block from U_0ᵀ·1 (√|O| per orbit) gives the same λ to rounding.
 EquivalentSourceSolve EquivalentSources::solve(double omega, double regularisation) const {
   if (!(omega > 0.0)) throw std::invalid_argument("equivalent sources: the frequency must be > 0");
+  if (!(regularisation >= 0.0)) throw std::invalid_argument("equivalent sources: the regularisation must be >= 0");
   const double k = omega / medium_.sound_speed;
-  const auto largest_singular_value = [](const Eigen::MatrixXcd& v, Eigen::VectorXcd x) {
-    double sigma_max = 0.0;
-    for (int i = 0; i < 30; ++i) {
-      const Eigen::VectorXcd y = v.adjoint() * (v * x);
-      const double norm = y.norm();
-      if (!(norm > 0.0)) break;
-      sigma_max = std::sqrt(norm / x.norm());
-      x = y / norm;
-    }
-    return sigma_max;
-  };
-  if (!point_pairing_) {
-    const Eigen::MatrixXcd v = velocity_matrix(k);
-    return EquivalentSourceSolve(v, regularisation * largest_singular_value(v, Eigen::VectorXcd::Ones(v.cols())));
+  if (!point_basis_) {
+    EquivalentSourceSolve out;
+    out.surface_points_ = surface_.cols();
+    out.source_count_ = sources_.cols();
+    out.row_scale_ = row_scale_;
+    out.factors_.emplace_back(std::in_place, velocity_matrix(k), method_);
+    RegularisedLeastSquares& f = *out.factors_.back();
+    f.factorise(regularisation * std::sqrt(f.largest_singular_value_squared(Eigen::VectorXcd::Ones(sources_.cols()))));
+    return out;
   }
-  const MirrorPairing& points = *point_pairing_;
-  const MirrorPairing& sources = *source_pairing_;
+  const SymmetryBasis& points = *point_basis_;
+  const SymmetryBasis& sources = *source_basis_;
   std::vector<Eigen::Index> rows;
-  for (const auto& pair : points.pairs) rows.push_back(pair.first);
-  rows.insert(rows.end(), points.fixed.begin(), points.fixed.end());
-  const Eigen::MatrixXcd half = velocity_matrix(k, rows);  // even_size × Ns
-  const double root2 = std::sqrt(2.0);
-  Eigen::MatrixXcd even(points.even_size(), sources.even_size());
-  Eigen::MatrixXcd odd(points.odd_size(), sources.odd_size());
-  Eigen::Index j = 0;
-  for (const auto& [s, mirror] : sources.pairs) {
-    even.col(j) = half.col(s) + half.col(mirror);
-    odd.col(j) = half.col(s).head(points.odd_size()) - half.col(mirror).head(points.odd_size());
-    ++j;
+  for (const SymmetryBasis::Orbit& o : points.orbits()) rows.push_back(o.members.front().point);
+  const Eigen::MatrixXcd reduced = velocity_matrix(k, rows);  // orbits × Ns
+  EquivalentSourceSolve out;
+  out.surface_points_ = points.size();
+  out.source_count_ = sources.size();
+  out.point_basis_ = point_basis_;
+  out.source_basis_ = source_basis_;
+  out.row_scale_ = row_scale_;
+  for (int c = 0; c < points.characters(); ++c) {
+    const std::vector<Eigen::Index>& row_orbits = points.block(c);
+    const std::vector<Eigen::Index>& column_orbits = sources.block(c);
+    if (row_orbits.empty() || column_orbits.empty()) {
+      out.factors_.emplace_back();
+      continue;
+    }
+    Eigen::VectorXd row_scale(static_cast<Eigen::Index>(row_orbits.size()));
+    for (std::size_t i = 0; i < row_orbits.size(); ++i)
+      row_scale(static_cast<Eigen::Index>(i)) =
+          std::sqrt(static_cast<double>(points.orbits()[static_cast<std::size_t>(row_orbits[i])].members.size()));
+    Eigen::MatrixXcd block(static_cast<Eigen::Index>(row_orbits.size()), static_cast<Eigen::Index>(column_orbits.size()));
+    Eigen::VectorXcd column(reduced.rows());
+    for (std::size_t j = 0; j < column_orbits.size(); ++j) {
+      const SymmetryBasis::Orbit& orbit = sources.orbits()[static_cast<std::size_t>(column_orbits[j])];
+      column.setZero();
+      for (const SymmetryBasis::Member& m : orbit.members) column += SymmetryBasis::character(c, m.element) * reduced.col(m.point);
+      const double scale = 1.0 / std::sqrt(static_cast<double>(orbit.members.size()));
+      auto target = block.col(static_cast<Eigen::Index>(j));
+      for (std::size_t i = 0; i < row_orbits.size(); ++i)
+        target(static_cast<Eigen::Index>(i)) = (row_scale(static_cast<Eigen::Index>(i)) * scale) * column(row_orbits[i]);
+    }
+    out.factors_.emplace_back(std::in_place, std::move(block), method_);
   }
-  for (Eigen::Index g : sources.fixed) even.col(j++) = root2 * half.col(g);
-  even.bottomRows(static_cast<Eigen::Index>(points.fixed.size())) /= root2;
-  Eigen::VectorXcd start = Eigen::VectorXcd::Ones(sources.even_size());
-  start.head(sources.odd_size()) *= root2;
-  const double lambda = regularisation * largest_singular_value(even, std::move(start));
-  return EquivalentSourceSolve(points, sources, even, odd, lambda);
+  // The trivial character's block holds every orbit of both sets.
+  Eigen::VectorXcd start(sources.size(0));
+  for (Eigen::Index j = 0; j < start.size(); ++j)
+    start(j) = std::sqrt(static_cast<double>(sources.orbits()[static_cast<std::size_t>(sources.block(0)[static_cast<std::size_t>(j)])].members.size()));
+  const double lambda = regularisation * std::sqrt(out.factors_[0]->largest_singular_value_squared(std::move(start)));
+  for (auto& f : out.factors_)
+    if (f) f->factorise(lambda);
+  return out;
 }
 
-Eigen::MatrixXd EquivalentSources::power_matrix(double omega) const {
+// The power of the sources' field from its far field: with Ψ_j → ik·a_j(x̂)·e^{ik x̂·s_j}
+// e^{−ik|x|}/(4π|x|) far away (monopole a = 1/(ik); combined a = n_j·x̂ + η), the power into the
+// whole space is ½qᴴSq with S_ij = (ωρk³/4π)·(1/4π)∮ a_i* a_j e^{ik x̂·(s_j − s_i)} dΩ; over the
+// rigid plane, half that of the sources with their images, which by the mirror symmetry of the
+// pairs is S_ij = (·)(C(i, j) + C(i, j′)). With u = k(s_j − s_i), ρ = |u|, û = u/ρ:
+//   (1/4π)∮ e^{i x̂·u} = j₀(ρ),  (1/4π)∮ x̂ e^{i x̂·u} = i j₁(ρ) û,
+//   (1/4π)∮ x̂x̂ᵀ e^{i x̂·u} = (j₁(ρ)/ρ) I − j₂(ρ) ûûᵀ,
+// so C = η² j₀ + iη j₁ (n_i + n_j)·û + (j₁/ρ) n_i·n_j − j₂ (n_i·û)(n_j·û) for combined
+// sources, and C = j₀/k² for monopoles.
+Complex EquivalentSources::power_entry(Eigen::Index i, Eigen::Index j, double k) const {
+  const auto coupling = [&](const Eigen::Vector3d& sj, const Eigen::Vector3d& nj) -> Complex {
+    const Eigen::Vector3d u = k * (sj - sources_.col(i));
+    const double rho = u.norm();
+    const Bessel b = spherical_bessel(rho);
+    if (!(coupling_ > 0.0)) return b.j0 / (k * k);
+    const Eigen::Vector3d ni = source_normals_.col(i);
+    const double eta = coupling_ + coupling_floor_ / k;
+    if (rho == 0.0) return eta * eta + ni.dot(nj) / 3.0;
+    const Eigen::Vector3d unit = u / rho;
+    return Complex(eta * eta * b.j0 + b.j1_over_x * ni.dot(nj) - b.j2 * ni.dot(unit) * nj.dot(unit),
+                   eta * b.j1 * (ni + nj).dot(unit));
+  };
+  Complex value = coupling(sources_.col(j), source_normals_.col(j));
+  if (rigid_plane_) value += coupling(mirrored(sources_.col(j)), mirrored(source_normals_.col(j)));
+  return value;
+}
+
+Eigen::MatrixXcd EquivalentSources::power_matrix(double omega) const {
   const double k = omega / medium_.sound_speed;
-  const double scale = omega * medium_.density * k / (4.0 * std::numbers::pi);
-  const auto sinc = [](double x) { return x < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x; };
+  const double scale = omega * medium_.density * k * k * k / (4.0 * std::numbers::pi);
   const Eigen::Index n = sources_.cols();
-  Eigen::MatrixXd s(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Vector3d image = mirrored(sources_.col(j));
+  Eigen::MatrixXcd s(n, n);
+  for (Eigen::Index j = 0; j < n; ++j)
     for (Eigen::Index i = 0; i <= j; ++i) {
-      double value = sinc(k * (sources_.col(i) - sources_.col(j)).norm());
-      if (rigid_plane_) value += sinc(k * (sources_.col(i) - image).norm());
-      s(i, j) = s(j, i) = scale * value;
+      s(i, j) = scale * power_entry(i, j, k);
+      s(j, i) = std::conj(s(i, j));
     }
-  }
   return s;
+}
+
+// Split: S commutes with the group like V, so qᴴSq = Σ_c q_cᴴ S_c q_c with q_c = W_cᵀq and
+// S_c(a, b) = √(|O_a|/|O_b|) Σ_{y ∈ O_b} χ_c(g_y) S(r_a, y): the rows at the orbits'
+// representatives only.
+Eigen::VectorXd EquivalentSources::radiated_power(double omega, const Eigen::MatrixXcd& strengths) const {
+  if (strengths.rows() != sources_.cols()) throw std::invalid_argument("equivalent sources: one strength per source");
+  const double k = omega / medium_.sound_speed;
+  const double scale = omega * medium_.density * k * k * k / (4.0 * std::numbers::pi);
+  Eigen::VectorXd power = Eigen::VectorXd::Zero(strengths.cols());
+  if (!source_basis_) {
+    const Eigen::MatrixXcd sq = power_matrix(omega) * strengths;
+    for (Eigen::Index c = 0; c < strengths.cols(); ++c) power(c) = 0.5 * strengths.col(c).dot(sq.col(c)).real();
+    return power;
+  }
+  const SymmetryBasis& basis = *source_basis_;
+  const auto orbits = static_cast<Eigen::Index>(basis.orbits().size());
+  Eigen::MatrixXcd rows(orbits, sources_.cols());  // S at the representatives' rows
+  for (Eigen::Index j = 0; j < sources_.cols(); ++j)
+    for (Eigen::Index a = 0; a < orbits; ++a)
+      rows(a, j) = scale * power_entry(basis.orbits()[static_cast<std::size_t>(a)].members.front().point, j, k);
+  for (int c = 0; c < basis.characters(); ++c) {
+    const std::vector<Eigen::Index>& block = basis.block(c);
+    if (block.empty()) continue;
+    const auto size = static_cast<Eigen::Index>(block.size());
+    Eigen::MatrixXcd s(size, size);
+    for (Eigen::Index b = 0; b < size; ++b) {
+      const SymmetryBasis::Orbit& orbit = basis.orbits()[static_cast<std::size_t>(block[static_cast<std::size_t>(b)])];
+      for (Eigen::Index a = 0; a < size; ++a) {
+        const Eigen::Index row = block[static_cast<std::size_t>(a)];
+        Complex sum = 0.0;
+        for (const SymmetryBasis::Member& m : orbit.members) sum += SymmetryBasis::character(c, m.element) * rows(row, m.point);
+        const double size_a = static_cast<double>(basis.orbits()[static_cast<std::size_t>(row)].members.size());
+        s(a, b) = std::sqrt(size_a / static_cast<double>(orbit.members.size())) * sum;
+      }
+    }
+    const Eigen::MatrixXcd q = basis.reduce(strengths, c);
+    const Eigen::MatrixXcd sq = s * q;
+    for (Eigen::Index col = 0; col < strengths.cols(); ++col) power(col) += 0.5 * q.col(col).dot(sq.col(col)).real();
+  }
+  return power;
 }
 
 Eigen::MatrixXcd EquivalentSources::transfer(double omega, const Eigen::Matrix3Xd& receivers, double regularisation) const {

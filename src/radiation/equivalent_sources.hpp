@@ -10,12 +10,15 @@
 //   p(x) = iωρ·q·G(x, s),   G = e^{−ikr}/(4πr) (+ the image term),   k = ω/c,
 // and by Euler's equation iωρ·v = −∇p the normal velocity v_n = −q·∂G/∂n.
 #include <complex>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/QR>
+
+#include "radiation/least_squares.hpp"
+#include "radiation/symmetry_basis.hpp"
 
 namespace rollnoise {
 
@@ -31,18 +34,9 @@ Eigen::Vector3cd helmholtz_green_gradient(const Eigen::Vector3d& x, const Eigen:
                                           bool rigid_plane);
 
 // The mirror y → −y (the tyre's centre plane), as a permutation of a point set: the pairs it
-// exchanges and the points it maps to themselves (on the plane y = 0).
-//
-// Why: when the collocation points and the sources are both mirror-symmetric (positions and
-// normals), and the Green's function is too (free field, or with the road z = 0), the velocity
-// matrix commutes with the mirror, V(m′, s′) = V(m, s). In the orthonormal bases of even and odd
-// combinations, (x_m + x_m′)/√2 and x_f (on the plane) for the even part, (x_m − x_m′)/√2 for the
-// odd, V is block diagonal: the problem splits into two independent half-size problems, the
-// decomposition of symmetric boundary-value problems by the irreducible representations of their
-// symmetry group (here Z₂; Allgower, Böhmer, Georg & Miranda, "Exploiting symmetry in boundary element
-// methods", SIAM J. Numer. Anal. 29, 1992).
-// The bases are orthonormal, so both ‖V q − v‖² and ‖q‖² are sums over the two parts and the
-// Tikhonov-regularised solution with the same λ is exactly the full one.
+// exchanges and the points it maps to themselves (on the plane y = 0). The solve itself splits
+// by SymmetryBasis (symmetry_basis.hpp), which covers this mirror and x → −x with it; this is
+// the mirror's description for callers that check a mesh's symmetry.
 struct MirrorPairing {
   std::vector<std::pair<Eigen::Index, Eigen::Index>> pairs;  // (y > 0, its mirror at y < 0)
   std::vector<Eigen::Index> fixed;                            // on the plane
@@ -65,60 +59,79 @@ std::optional<MirrorPairing> find_mirror_pairing(const Eigen::Matrix3Xd& points,
                                                  double tolerance);
 
 // The least-squares problem of one frequency, min ‖V q − v‖² + λ²‖q‖² (V: surface normal
-// velocity per unit source strength), factorised once as the Householder QR of [V; λI] and
-// reused for any number of velocity patterns or receivers. QR rather than the SVD: the tyre's
-// systems are well conditioned (σ_max/σ_min ≈ 300 on the default mesh) and the QR is 3× faster;
-// the λI rows keep the solve bounded on meshes where they are not.
+// velocity per unit source strength), factorised once (least_squares.hpp: the normal equations
+// by Cholesky when they are well conditioned, else the Householder QR of [V; λI]) and reused for
+// any number of velocity patterns or receivers.
 //
-// Mirror-symmetric bodies (MirrorPairing): the even and the odd half problems are factorised
-// instead, each [V_e; λI] and [V_o; λI] of about half the rows and columns. The Householder QR
-// costs ∝ rows·columns², so the two cost a quarter of the full one, for the same answer.
+// Symmetric bodies (SymmetryBasis: the mirror y → −y, and x → −x too when the body has it): the
+// problems of the group's characters are factorised instead, 2 or 4 of them, each of 1/2 or
+// 1/4 the rows and columns. The solve costs ∝ rows·columns², so the halves cost 1/4 of the full
+// problem and the quarters 1/16, for the same answer.
 class EquivalentSourceSolve {
  public:
   // The full problem: V is M × Ns.
   EquivalentSourceSolve(const Eigen::MatrixXcd& velocity_matrix, double lambda);
-  // The split problem: V_e (points.even_size() × sources.even_size()) and V_o (odd sizes), the
-  // blocks of V in the even and odd bases of the points' and the sources' pairings.
-  EquivalentSourceSolve(MirrorPairing points, MirrorPairing sources, const Eigen::MatrixXcd& even_matrix,
-                        const Eigen::MatrixXcd& odd_matrix, double lambda);
+  // The split problem: blocks[c] is V in character c's bases of the points and the sources
+  // (points.size(c) × sources.size(c)); λ as for the full problem.
+  EquivalentSourceSolve(std::shared_ptr<const SymmetryBasis> points, std::shared_ptr<const SymmetryBasis> sources,
+                        std::vector<Eigen::MatrixXcd> blocks, double lambda);
 
   // Source strengths for surface velocities: M × K → Ns × K.
-  Eigen::MatrixXcd strengths(const Eigen::MatrixXcd& normal_velocities) const;
+  Eigen::MatrixXcd strengths(const Eigen::MatrixXcd& velocities) const;
   // The operator from surface velocities to what the rows measure: given K × Ns (a quantity
   // per unit source strength, such as receiver pressures), returns K × M, rows · V⁺.
   Eigen::MatrixXcd transfer(const Eigen::MatrixXcd& rows_per_source) const;
 
-  // Whether the split (mirror-symmetric) factorisation is used.
-  bool mirror_split() const noexcept { return split_; }
+  // Whether the problem is split by symmetry, and into how many blocks (1: the full solve).
+  bool mirror_split() const noexcept { return factors_.size() > 1; }
+  int blocks() const noexcept { return static_cast<int>(factors_.size()); }
+  // Whether every block took the normal equations (least_squares.hpp), and the smallest of the
+  // blocks' reciprocal condition estimates of VᴴV + λ²I.
+  bool normal_equations() const noexcept;
+  double reciprocal_condition() const noexcept;
 
  private:
-  // One factorised problem [A; λI] = QR.
-  struct Factor {
-    Factor(const Eigen::MatrixXcd& matrix, double lambda);
-    Eigen::MatrixXcd strengths(const Eigen::MatrixXcd& velocities) const;
-    Eigen::MatrixXcd transfer(const Eigen::MatrixXcd& rows_per_source) const;
-    Eigen::Index rows = 0, columns = 0;
-    Eigen::HouseholderQR<Eigen::MatrixXcd> qr;
-  };
+  friend class EquivalentSources;
+  EquivalentSourceSolve() = default;
+  Eigen::MatrixXcd unweighted_transfer(const Eigen::MatrixXcd& rows_per_source) const;
 
   Eigen::Index surface_points_ = 0;
   Eigen::Index source_count_ = 0;
-  bool split_ = false;
-  MirrorPairing point_pairing_, source_pairing_;  // split only
-  std::vector<Factor> factors_;                   // the full problem, or the even and the odd
+  std::shared_ptr<const SymmetryBasis> point_basis_, source_basis_;  // split only
+  std::vector<std::optional<RegularisedLeastSquares>> factors_;      // per block; empty: no unknowns or no rows
+  Eigen::VectorXd row_scale_;  // √w of the collocation weights (empty: unweighted)
+};
+
+// Equivalent sources as combined sources (Brakhage & Werner's combined potential as point
+// sources: Colton & Kress, "Integral Equation Methods in Scattering Theory", 1983, §3.6):
+// Ψ = ∂G/∂n_s + iηkG, a dipole along the outward normal of the surface point the source is
+// under plus a monopole, whose far field ik(n_s·x̂ + η)G points outwards (a cardioid for η = 1).
+// Why: monopoles alone on an interior surface cannot represent an exterior field near the
+// Dirichlet eigenfrequencies of the volume they enclose (a single layer whose interior problem
+// is resonant), and from 2–3 kHz the tyre's interior has one every few Hz: the field of a
+// monopole near the axle was rebuilt 40–65 % wrong at 4 and 5 kHz on the default mesh, and
+// 8–31 % on meshes twice as fine. The combined layer has no such frequencies (a combined layer
+// whose exterior field vanishes is zero); with it, 1–4 %.
+struct CombinedSources {
+  Eigen::Matrix3Xd normals;  // 3 × Ns unit vectors n_s
+  double coupling = 1.0;     // η: the monopole's weight is iη_k with η_k = ηk + η₀
+  double floor = 0.0;        // η₀, 1/m
 };
 
 class EquivalentSources {
  public:
-  // automatic: split the solve by the mirror y → −y when the sources and the collocation points
-  // (with their normals) are mirror-symmetric within 1e-10 of the body's size (MirrorPairing);
-  // otherwise, or with `none`, the full solve. The answers agree to rounding.
-  enum class Symmetry { automatic, none };
+  // automatic: split the solve by the mirrors y → −y and x → −x, each when the sources and the
+  // collocation points (with their normals) are symmetric under it within 1e-10 of the body's
+  // size and it moves some of both (SymmetryBasis); centre_plane: by y → −y only; none, or no
+  // symmetry found: the full solve. The answers agree to rounding.
+  enum class Symmetry { automatic, centre_plane, none };
 
   // sources: 3 × Ns positions inside the body; surface: 3 × M collocation points with unit
   // outward normals (3 × M). rigid_plane: the plane z = 0 reflects (all points must lie in z > 0).
+  // combined: combined sources (above) instead of monopoles.
   EquivalentSources(Eigen::Matrix3Xd sources, Eigen::Matrix3Xd surface, Eigen::Matrix3Xd normals, bool rigid_plane,
-                    Medium medium = {}, Symmetry symmetry = Symmetry::automatic);
+                    Medium medium = {}, Symmetry symmetry = Symmetry::automatic,
+                    std::optional<CombinedSources> combined = std::nullopt);
 
   // The transfer matrix at angular frequency ω from the surface normal velocities (m/s, at the
   // M collocation points) to the pressures (Pa) at the receivers (3 × R): R × M. Tikhonov
@@ -135,30 +148,52 @@ class EquivalentSources {
 
   // The factorised least-squares problem at ω (regularisation as for transfer()).
   EquivalentSourceSolve solve(double omega, double regularisation = 1e-10) const;
-  // Pressures (Pa) at the points `at` (3 × K) per unit source strength: K × Ns, iωρG.
+  // Pressures (Pa) at the points `at` (3 × K) per unit source strength: K × Ns, iωρΨ (Ψ = G
+  // for monopoles).
   Eigen::MatrixXcd pressure_matrix(double omega, const Eigen::Matrix3Xd& at) const;
-  // The power matrix S (Ns × Ns, real symmetric) with radiated power W = ½ qᴴ S q for
-  // source strengths q: S_ij = Re(iωρ G(s_i, s_j)) = (ωρk/4π)·[sinc(k r_ij) + sinc(k r_ij′)],
-  // the second term (image of s_j) only with the rigid plane. This is the power that crosses a
-  // surface enclosing the sources (and, with the plane, the half-space above it), exact for
-  // the field the sources make: no surface quadrature is involved.
-  Eigen::MatrixXd power_matrix(double omega) const;
+  // The power matrix S (Ns × Ns, Hermitian) with radiated power W = ½ qᴴ S q for source
+  // strengths q. Monopoles: S_ij = Re(iωρ G(s_i, s_j)) = (ωρk/4π)·[sinc(k r_ij) + sinc(k r_ij′)]
+  // (real), the second term (image of s_j) only with the rigid plane; combined sources: the same
+  // from their far fields (equivalent_sources.cpp). This is the power that crosses a surface
+  // enclosing the sources (and, with the plane, the half-space above it), exact for the field
+  // the sources make: no surface quadrature is involved.
+  Eigen::MatrixXcd power_matrix(double omega) const;
+  // ½ Re qᴴSq for each column of `strengths` (Ns × K), W; by the symmetry blocks when split.
+  Eigen::VectorXd radiated_power(double omega, const Eigen::MatrixXcd& strengths) const;
 
   Eigen::Index source_count() const { return sources_.cols(); }
+  bool combined_sources() const noexcept { return coupling_ > 0.0; }
   Eigen::Index surface_count() const { return surface_.cols(); }
   const Medium& medium() const noexcept { return medium_; }
-  // Whether solve() splits the problem by the mirror y → −y.
-  bool mirror_symmetric() const noexcept { return point_pairing_.has_value(); }
+  // Whether solve() splits the problem by the mirror y → −y (the centre plane).
+  bool mirror_symmetric() const noexcept { return mirror_y_; }
+  // The number of blocks solve() splits the problem into: 1, 2 (one mirror) or 4 (both).
+  int symmetry_blocks() const noexcept { return point_basis_ ? point_basis_->characters() : 1; }
+  // How solve() solves the least-squares problems (least_squares.hpp; default automatic).
+  void set_least_squares_method(LeastSquaresMethod method) noexcept { method_ = method; }
+  // Weights of the collocation points in the least squares, min Σ w_m |(Vq − v)_m|² (default:
+  // all 1). With the points' areas the fit is that of the velocity over the surface, not over
+  // the points: on a mesh graded towards the contact, unweighted, the 2 mm cells there count as
+  // much as the 2 cm ones. Must be positive and, on a split solve, equal at mirror partners.
+  void set_collocation_weights(const Eigen::VectorXd& weights);
 
  private:
   // −∂G/∂n at the collocation points `rows` (all: M × Ns).
   Eigen::MatrixXcd velocity_matrix(double k) const;
   Eigen::MatrixXcd velocity_matrix(double k, const std::vector<Eigen::Index>& rows) const;
+  // S_ij/(ωρk³/4π) (power_matrix).
+  std::complex<double> power_entry(Eigen::Index i, Eigen::Index j, double k) const;
 
   Eigen::Matrix3Xd sources_, surface_, normals_;
+  Eigen::Matrix3Xd source_normals_;  // combined sources (zero for monopoles)
+  double coupling_ = 0.0;            // η; 0: monopoles
+  double coupling_floor_ = 0.0;      // η₀
   bool rigid_plane_;
   Medium medium_;
-  std::optional<MirrorPairing> point_pairing_, source_pairing_;  // both set, or neither
+  std::shared_ptr<const SymmetryBasis> point_basis_, source_basis_;  // both set, or neither
+  bool mirror_y_ = false;
+  LeastSquaresMethod method_ = LeastSquaresMethod::automatic;
+  Eigen::VectorXd row_scale_;  // √w (empty: unweighted)
 };
 
 }  // namespace rollnoise

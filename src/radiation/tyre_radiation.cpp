@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -12,6 +13,7 @@
 #include "core/fftw_plan.hpp"
 #include "core/progress.hpp"
 #include "core/real_fft_batch.hpp"
+#include "radiation/belt_sampling.hpp"
 #include "radiation/transfer_table.hpp"
 
 namespace rollnoise {
@@ -23,6 +25,17 @@ constexpr double kLowestAnchorHz = 20.0;
 // Zero padding after the record, s: longer than what is left of the receivers' responses once
 // the propagation delay is taken out (the horn's ringing dies within a few milliseconds).
 constexpr double kPaddingSeconds = 0.03;
+// The highest anchor is at most this fraction of the Nyquist frequency.
+constexpr double kNyquistFraction = 0.99;
+// η₀ of the combined sources (equivalent_sources.hpp), 1/m: the monopole's weight is
+// i(k + η₀). η = k alone (the usual choice at high frequency) leaves the sources nearly pure
+// dipoles at low frequency, which rebuild a monopole's field poorly (6.6 % at 500 Hz, 40 % at
+// 100 Hz on the runs' mesh); η₀ about the inverse of the sources' depth (2–3 cm) balances the
+// two there. With η₀ = 50 the interior-monopole checks (test_deformed_mesh.cpp, on the stage's
+// meshes) stayed within 1.4 % of the incoherent direct + image amplitude below 1.5 kHz and within
+// 4.2 % at every anchor to 5623 Hz (a one-off scan); η₀ = 200 did worse above 4 kHz (7 % at
+// 5.3 kHz), and on the cylinder at 3 kHz a large η₀ brings back the monopoles' resonances.
+constexpr double kCouplingFloor = 50.0;
 
 // What one anchor's solve gives: the transfer to the receivers, and its hat-weighted share of
 // the power of the bins around it.
@@ -34,22 +47,68 @@ struct AnchorResult {
 
 }  // namespace
 
+EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium, bool combined) {
+  std::optional<CombinedSources> layer;
+  if (combined) layer = CombinedSources{mesh.source_normals, 1.0, kCouplingFloor};
+  return EquivalentSources(mesh.sources, mesh.points, mesh.normals, true, medium, EquivalentSources::Symmetry::automatic,
+                           std::move(layer));
+}
+
+std::vector<RadiationMeshLevel> radiation_mesh_levels(const TyreRadiationSettings& settings) {
+  const TyreSurfaceMeshSpec& base = settings.mesh;
+  if (!(settings.sample_rate_hz >= 0.0) || !std::isfinite(settings.sample_rate_hz))
+    throw std::invalid_argument("tyre radiation: the sample rate must be >= 0 (0: not known)");
+  const double top = settings.sample_rate_hz > 0.0 ? std::min(settings.max_frequency_hz, kNyquistFraction * 0.5 * settings.sample_rate_hz)
+                                                   : settings.max_frequency_hz;
+  std::vector<RadiationMeshLevel> out{{base, top}};
+  const double n = settings.points_per_wavelength;
+  if (!(n >= 0.0) || !std::isfinite(n)) throw std::invalid_argument("tyre radiation: points per wavelength must be >= 0");
+  if (n == 0.0) return out;
+  const double c = settings.medium.sound_speed;
+  const double spacing = kTwoPi * base.radius / (base.around * base.tread_split);
+  out.front().top_hz = c / (n * spacing);
+  for (int split = 2; out.back().top_hz < top; split *= 2) {
+    if (split > 8)
+      throw std::invalid_argument("tyre radiation: the mesh is too coarse for the maximum frequency (more than an 8-fold split "
+                                  "of the tread; raise mesh_around)");
+    RadiationMeshLevel level{base, split * out.front().top_hz};
+    level.spec.tread_split = base.tread_split * split;
+    const double wavelength = c / std::min(level.top_hz, top);
+    level.spec.sidewall_rings = std::max(base.sidewall_rings, static_cast<int>(std::ceil(n * base.radius / wavelength)));
+    out.push_back(level);
+  }
+  return out;
+}
+
 TyreRadiation::TyreRadiation(const TyreRadiationSettings& settings, Eigen::Matrix3Xd receivers)
-    : settings_(settings),
-      mesh_(make_tyre_surface_mesh(settings.mesh)),
-      model_(mesh_.sources, mesh_.points, mesh_.normals, true, settings.medium),
-      receivers_(std::move(receivers)),
-      centre_(0.0, 0.0, mesh_.axle_height) {
+    : settings_(settings), receivers_(std::move(receivers)) {
   if (!(settings_.max_frequency_hz > kLowestAnchorHz) || !std::isfinite(settings_.max_frequency_hz))
     throw std::invalid_argument("tyre radiation: the maximum frequency must be above 20 Hz");
   if (!(settings_.anchor_spacing_hz >= 5.0 && settings_.anchor_spacing_hz <= 1000.0))
     throw std::invalid_argument("tyre radiation: the anchor spacing must be within 5 ... 1000 Hz");
+  if (!(settings_.combined_sources_above_hz >= 0.0)) throw std::invalid_argument("tyre radiation: combined_sources_above_hz must be >= 0");
   if (settings_.threads < 0) throw std::invalid_argument("tyre radiation: threads must be >= 0");
   if (receivers_.cols() == 0) throw std::invalid_argument("tyre radiation: no receivers");
+  for (const RadiationMeshLevel& level : radiation_mesh_levels(settings_)) {
+    TyreSurfaceMesh mesh = make_tyre_surface_mesh(level.spec);
+    EquivalentSources monopoles = make_tyre_model(mesh, settings_.medium, false);
+    EquivalentSources combined = make_tyre_model(mesh, settings_.medium, true);
+    levels_.push_back({level.top_hz, level.spec, std::move(mesh), std::move(monopoles), std::move(combined), {}});
+  }
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) levels_[l].from_input = tread_to_tread_matrix(input_mesh(), levels_[l].mesh);
+  centre_ = Eigen::Vector3d(0.0, 0.0, input_mesh().axle_height);
+}
+
+std::size_t TyreRadiation::level_of(double anchor_hz) const {
+  for (std::size_t l = 0; l < levels_.size(); ++l)
+    if (anchor_hz <= levels_[l].top_hz) return l;
+  return levels_.size() - 1;
 }
 
 std::vector<double> TyreRadiation::anchors(double sample_rate) const {
-  const double top = std::min(settings_.max_frequency_hz, 0.99 * 0.5 * sample_rate);
+  if (settings_.sample_rate_hz > 0.0 && sample_rate != settings_.sample_rate_hz)
+    throw std::invalid_argument("tyre radiation: the velocities' sample rate differs from the settings'");
+  const double top = std::min(settings_.max_frequency_hz, kNyquistFraction * 0.5 * sample_rate);
   if (!(top > kLowestAnchorHz)) throw std::invalid_argument("tyre radiation: the sample rate is too low (below 40 Hz)");
   const double spacing = settings_.anchor_spacing_hz;
   std::vector<double> out{kLowestAnchorHz};
@@ -63,8 +122,10 @@ std::vector<double> TyreRadiation::anchors(double sample_rate) const {
 RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, double sample_rate,
                                      ProgressReporter* progress) const {
   const Eigen::Index active = surface_velocity.cols();
-  if (active != mesh_.points.cols() && active != mesh_.tread_points)
-    throw std::invalid_argument("tyre radiation: velocities for all collocation points or for the tread's");
+  const TyreSurfaceMesh& input = input_mesh();
+  if (active != input.tread_points && !(active == input.points.cols() && levels_.size() == 1))
+    throw std::invalid_argument(
+        "tyre radiation: velocities for the tread's collocation points (or for all of them when one mesh serves every anchor)");
   if (surface_velocity.rows() < 2) throw std::invalid_argument("tyre radiation: need at least 2 samples");
   if (!(sample_rate > 0.0) || !std::isfinite(sample_rate))
     throw std::invalid_argument("tyre radiation: the sample rate must be positive");
@@ -97,40 +158,63 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   // is ½qᴴSq·4/(N·L) with q the sources for the raw bin X_k (N samples, L the transform length).
   const double power_scale = 4.0 / (static_cast<double>(samples) * length);
   std::vector<AnchorResult> results(anchor.size());
+  std::vector<double> seconds(anchor.size(), 0.0);
   const auto solve_anchor = [&](std::size_t a) {
+    const auto started = std::chrono::steady_clock::now();
+    struct Clock {
+      std::chrono::steady_clock::time_point started;
+      double& seconds;
+      ~Clock() { seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
+    } clock{started, seconds[a]};
     const double omega = kTwoPi * anchor[a];
-    const EquivalentSourceSolve solve = model_.solve(omega, settings_.regularisation);
+    const Level& level = levels_[level_of(anchor[a])];
+    const bool own = &level == &levels_.back();  // the input mesh itself
+    const EquivalentSources& model = anchor[a] > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
+    const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
     AnchorResult& out = results[a];
-    out.transfer = solve.transfer(model_.pressure_matrix(omega, receivers_)).leftCols(active);
+    const Eigen::MatrixXcd transfer = solve.transfer(model.pressure_matrix(omega, receivers_));
+    if (own)
+      out.transfer = transfer.leftCols(active);
+    else
+      out.transfer = transfer.leftCols(level.mesh.tread_points) * level.from_input;
     const double below = a > 0 ? anchor[a - 1] : anchor[a];
     const double above = a + 1 < anchor.size() ? anchor[a + 1] : anchor[a];
     for (Eigen::Index b = 0; b < band; ++b)
       if (frequency(b) >= below && frequency(b) <= above && (frequency(b) > below || a == 0)) out.bins.push_back(b);
     if (out.bins.empty()) return;
-    Eigen::MatrixXcd velocities = Eigen::MatrixXcd::Zero(mesh_.points.cols(), static_cast<Eigen::Index>(out.bins.size()));
-    for (std::size_t i = 0; i < out.bins.size(); ++i)
-      velocities.col(static_cast<Eigen::Index>(i)).head(active) = spectra.col(out.bins[i]);
-    const Eigen::MatrixXcd q = solve.strengths(velocities);
-    const Eigen::MatrixXcd sq = model_.power_matrix(omega).cast<std::complex<double>>() * q;
+    Eigen::MatrixXcd velocities = Eigen::MatrixXcd::Zero(level.mesh.points.cols(), static_cast<Eigen::Index>(out.bins.size()));
+    for (std::size_t i = 0; i < out.bins.size(); ++i) {
+      const auto c = static_cast<Eigen::Index>(i);
+      if (own)
+        velocities.col(c).head(active) = spectra.col(out.bins[i]);
+      else
+        velocities.col(c).head(level.mesh.tread_points) = level.from_input * spectra.col(out.bins[i]);
+    }
+    const Eigen::VectorXd power = model.radiated_power(omega, solve.strengths(velocities));
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const double f = frequency(out.bins[i]);
       const double hat = f < anchor[a] ? (f - below) / (anchor[a] - below)
                          : f > anchor[a] ? (above - f) / (above - anchor[a])
                                          : 1.0;
-      const auto c = static_cast<Eigen::Index>(i);
-      out.power.push_back(hat * power_scale * 0.5 * q.col(c).dot(sq.col(c)).real());
+      out.power.push_back(hat * power_scale * power(static_cast<Eigen::Index>(i)));
     }
   };
 
   // Anchors in parallel: each worker takes the next unsolved one.
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const auto workers = std::min<std::size_t>(anchor.size(), settings_.threads > 0 ? static_cast<std::size_t>(settings_.threads) : cores);
+  // The costliest (finest) first, so that the threads finish together; the results go to
+  // their anchors' places whatever the order.
+  std::vector<std::size_t> order(anchor.size());
+  for (std::size_t a = 0; a < anchor.size(); ++a) order[a] = a;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return level_of(anchor[x]) > level_of(anchor[y]); });
   std::atomic<std::size_t> next{0};
   std::size_t finished = 0;
   std::mutex mutex;
   std::exception_ptr failure;
   const auto work = [&] {
-    for (std::size_t a = next++; a < anchor.size(); a = next++) {
+    for (std::size_t i = next++; i < anchor.size(); i = next++) {
+      const std::size_t a = order[i];
       try {
         solve_anchor(a);
       } catch (...) {
@@ -155,6 +239,9 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   out.lowest_hz = anchor.front();
   out.highest_hz = anchor.back();
   out.delays_s = propagation_delays(receivers_, centre_, settings_.medium.sound_speed);
+  out.anchors_hz = anchor;
+  for (double f : anchor) out.anchor_mesh.push_back(level_of(f));
+  out.anchor_seconds = seconds;
   out.frequency_hz.resize(band);
   for (Eigen::Index b = 0; b < band; ++b) out.frequency_hz(b) = frequency(b);
   out.sound_power_w = Eigen::VectorXd::Zero(band);

@@ -253,7 +253,8 @@ double TyreSurfaceShape::lowest_gap_outside_patch() const {
 
 TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
   if (!(s.radius > 0 && s.width > 0 && s.clearance > 0) || s.around < 8 || s.across < 1 || s.sidewall_rings < 1 ||
-      !(s.source_depth >= 0 && s.source_depth < 0.5 * s.width) || s.source_stride < 1)
+      !(s.source_depth >= 0 && s.source_depth < 0.5 * s.width) || s.source_stride < 1 || s.tread_split < 1 ||
+      s.tread_split > 64)
     throw std::invalid_argument("tyre surface mesh: sizes must be positive (clearance > 0, source depth below half the width)");
   if (!(s.contact_refinement >= 1.0 && s.contact_refinement <= 1000.0) || !(s.contact_growth > 1.0 && s.contact_growth <= 2.0))
     throw std::invalid_argument("tyre surface mesh: contact refinement must be within 1 ... 1000, growth within (1, 2]");
@@ -266,7 +267,9 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
 
   // Tread cells around, in material angle.
   const double dphi = kTwoPi / s.around;
-  const double depth = s.source_depth > 0.0 ? s.source_depth : 1.5 * s.radius * dphi;  // at the uniform spacing
+  const int split = s.tread_split;
+  // At the uniform spacing (split).
+  const double depth = s.source_depth > 0.0 ? s.source_depth : 1.5 * s.radius * dphi / split;
   std::vector<double> widths;
   double start = 0.0;
   if (!deformed) {
@@ -296,6 +299,22 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
     widths.insert(widths.end(), outside.begin(), outside.end());
     start = -psi0;
     mesh.patch_cells = static_cast<int>(patch.size());
+  }
+  if (split > 1) {
+    // Each cell in `split` equal parts, but none finer than the finest cell of the unsplit
+    // partition (the contact refinement's): the graded cells at the contact keep their size, so
+    // the sources under them stay about as far apart as they are deep (halving them put the
+    // sources 8 spacings deep there and the system's condition number near 1e7).
+    const double finest = dphi / std::max(s.contact_refinement, static_cast<double>(split));
+    std::vector<double> whole = std::move(widths);
+    widths.clear();
+    int patch = 0;
+    for (std::size_t a = 0; a < whole.size(); ++a) {
+      const int parts = std::min(split, std::max(1, static_cast<int>(std::floor(whole[a] / finest + 1e-9))));
+      widths.insert(widths.end(), static_cast<std::size_t>(parts), whole[a] / parts);
+      if (static_cast<int>(a) < mesh.patch_cells) patch += parts;
+    }
+    mesh.patch_cells = patch;
   }
   const auto around = static_cast<int>(widths.size());
   std::vector<double> edges(widths.size() + 1);
@@ -367,7 +386,7 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
   std::vector<int> ring_count(static_cast<std::size_t>(rings));
   for (int k = 0; k < rings; ++k) {
     const double r = s.radius * (k + 0.5) / rings;
-    ring_count[static_cast<std::size_t>(k)] = std::max(6, static_cast<int>(std::lround(s.around * r / s.radius)));
+    ring_count[static_cast<std::size_t>(k)] = std::max(6, static_cast<int>(std::lround(s.around * split * r / s.radius)));
   }
   const auto divisions = [&](int k) {
     std::vector<double> out;
@@ -500,26 +519,52 @@ TyreSurfaceMesh make_tyre_surface_mesh(const TyreSurfaceMeshSpec& s) {
   mesh.tread_across = s.across;
   mesh.tread_angle_edges = std::move(edges);
   mesh.tread_row_edges = std::move(rows);
-  // Sources: every stride-th collocation point of one half of the tyre, y ≤ 0, and the mirror
-  // images of those on the other half, so that the sources are mirror-symmetric like the points
-  // and the solve splits (equivalent_sources.hpp, MirrorPairing). Tread row c mirrors row
-  // Nb − 1 − c (same angles), the +y sidewall the −y one point by point. Each point moves
-  // inwards along its normal by its depth. When Na and the points of a sidewall are multiples of
-  // the stride (the default meshes), these are the stride-th points in global order.
+  // Sources: every stride-th collocation point of one quarter of the tyre (y ≤ 0, and the half
+  // of each x-mirrored pair of cells that comes first), and the mirror images of those, so that
+  // the sources are symmetric like the points under y → −y and x → −x and the solve splits
+  // (symmetry_basis.hpp). Tread row c mirrors row Nb − 1 − c (same angles), the +y sidewall the
+  // −y one point by point; along the tread, cell a mirrors the cell whose middle is at −ψ(a),
+  // on a ring point m the point at the opposite angle. A point is chosen when the first of its
+  // x-mirror pair is the stride-th; where the pair's two members have the same parity (the
+  // undeformed tread with Na even, the deformed one with an odd count of patch cells), these
+  // are the stride-th points in global order. Each point moves inwards along its normal by its
+  // depth.
   const int sidewall = static_cast<int>(n) - tread;  // both sidewalls
+  std::vector<int> tread_mirror(static_cast<std::size_t>(around));
+  for (int a = 0; a < around; ++a) {
+    const std::vector<double>& e = mesh.tread_angle_edges;
+    const double middle = 0.5 * (e[static_cast<std::size_t>(a)] + e[static_cast<std::size_t>(a) + 1]);
+    tread_mirror[static_cast<std::size_t>(a)] = a;  // none found: the cell is its own
+    for (int b = 0; b < around; ++b) {
+      const double other = 0.5 * (e[static_cast<std::size_t>(b)] + e[static_cast<std::size_t>(b) + 1]);
+      if (std::abs(std::remainder(middle + other, kTwoPi)) < 1e-9) tread_mirror[static_cast<std::size_t>(a)] = b;
+    }
+  }
+  std::vector<int> ring_mirror;  // per sidewall point j (ring by ring): the point at the opposite angle
+  for (int k = 0, offset = 0; k < rings; ++k) {
+    const int count = ring_count[static_cast<std::size_t>(k)];
+    for (int m = 0; m < count; ++m) ring_mirror.push_back(offset + (k % 2 == 0 ? (count - m) % count : count - 1 - m));
+    offset += count;
+  }
   std::vector<Eigen::Index> chosen;
   for (int c = 0; c < s.across; ++c) {
     const int lower = std::min(c, s.across - 1 - c);
-    for (int a = 0; a < around; ++a)
-      if ((a + around * lower) % s.source_stride == 0) chosen.push_back(a + around * c);
+    for (int a = 0; a < around; ++a) {
+      const int first = std::min(a, tread_mirror[static_cast<std::size_t>(a)]);
+      if ((first + around * lower) % s.source_stride == 0) chosen.push_back(a + around * c);
+    }
   }
   for (int side = 0; side < 2; ++side)
-    for (int j = 0; j < sidewall / 2; ++j)
-      if ((tread + j) % s.source_stride == 0) chosen.push_back(tread + side * (sidewall / 2) + j);
+    for (int j = 0; j < sidewall / 2; ++j) {
+      const int first = std::min(j, ring_mirror[static_cast<std::size_t>(j)]);
+      if ((tread + first) % s.source_stride == 0) chosen.push_back(tread + side * (sidewall / 2) + j);
+    }
   mesh.sources.resize(3, static_cast<Eigen::Index>(chosen.size()));
+  mesh.source_normals.resize(3, static_cast<Eigen::Index>(chosen.size()));
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const Eigen::Index p = chosen[i];
     mesh.sources.col(static_cast<Eigen::Index>(i)) = mesh.points.col(p) - depths[static_cast<std::size_t>(p)] * mesh.normals.col(p);
+    mesh.source_normals.col(static_cast<Eigen::Index>(i)) = mesh.normals.col(p);
   }
   return mesh;
 }

@@ -39,8 +39,10 @@
 // to two point spacings, the usual choice that keeps the least-squares problem well
 // conditioned while the sources still resolve the surface's detail. Points, normals and sources
 // are mirror-symmetric about the centre plane y = 0 for every spec (an odd `across` puts a
-// tread row on the plane, mapped to itself), so the equivalent-source solve splits into two
-// half-size problems (equivalent_sources.hpp, MirrorPairing).
+// tread row on the plane, mapped to itself) and about the plane x = 0 through the axle (the
+// patch is centred under it; the sources are chosen by x-mirror pairs of cells), so the
+// equivalent-source solve splits into four quarter-size problems (symmetry_basis.hpp).
+// source_normals holds each source's cell normal, for combined sources (equivalent_sources.hpp).
 //
 // Graded tread (contact_refinement > 1). The horn between tread and road is a wedge a few mm
 // high near where the tread leaves the road: a uniform 2 cm mesh does not see it, and a source
@@ -95,6 +97,13 @@ struct TyreSurfaceMeshSpec {
   // wide (1: uniform); the cells grow by contact_growth per cell away from them (1 < growth ≤ 2).
   double contact_refinement = 1.0;
   double contact_growth = 1.2;
+  // Nested refinement along the tread: each cell of the partition above (uniform or graded)
+  // split into this many equal cells (fewer where they would be finer than the partition's
+  // finest, the contact refinement's), so the coarser mesh's cells are unions of this one's (the
+  // radiation stage's finer meshes for its upper anchors, tyre_radiation.hpp). The sidewall rings
+  // then have around·tread_split points on the circumference of the rim, and the uniform source
+  // depth is that of the split spacing.
+  int tread_split = 1;
 };
 
 // The surface of the (deformed or undeformed) tyre as a function of the material angle ψ and y.
@@ -147,6 +156,7 @@ struct TyreSurfaceMesh {
   Eigen::Matrix3Xd normals;  // outward unit normals
   Eigen::VectorXd areas;     // surface element of each point, m²
   Eigen::Matrix3Xd sources;  // equivalent source positions, m
+  Eigen::Matrix3Xd source_normals;  // the outward normal of the collocation point each source is under
   int tread_points = 0;      // the first tread_points columns are the tread band, index a + Na·b
   int tread_around = 0;      // Na
   int tread_across = 0;      // Nb

@@ -189,5 +189,111 @@ TEST(TyreRadiationStage, Anchors) {
   EXPECT_THROW(radiation.radiate(Eigen::MatrixXd::Zero(10, 5), 1000.0), std::invalid_argument);
 }
 
+// Issue 10 §3: the meshes per band (tyre_radiation.hpp). The runs' default (96 around, graded to
+// 2 mm at the contact, 16 across, 12 rings) serves up to c/(4·2πR/96) = 4.15 kHz; to the 5 kHz
+// band's upper edge the tread is split in 2 above that, with 21 sidewall rings (4 per wavelength
+// at 5623 Hz); to 3 kHz, or at a sample rate whose anchors stop there, the base alone.
+TEST(TyreRadiationStage, MeshesPerBandFollowTheWavelength) {
+  TyreRadiationSettings settings;
+  settings.mesh.geometry = TyreGeometry::deformed;
+  settings.mesh.across = 16;
+  settings.mesh.contact_refinement = 10.0;
+  settings.max_frequency_hz = 5623.4;
+  const std::vector<RadiationMeshLevel> levels = radiation_mesh_levels(settings);
+  ASSERT_EQ(levels.size(), 2u);
+  const double spacing = 2 * kPi * settings.mesh.radius / settings.mesh.around;
+  EXPECT_NEAR(levels[0].top_hz, settings.medium.sound_speed / (4.0 * spacing), 1e-9);
+  EXPECT_NEAR(levels[0].top_hz, 4149.0, 1.0);
+  EXPECT_EQ(levels[0].spec.tread_split, 1);
+  EXPECT_EQ(levels[0].spec.sidewall_rings, 12);
+  EXPECT_EQ(levels[1].spec.tread_split, 2);
+  EXPECT_EQ(levels[1].spec.sidewall_rings, 21);
+  EXPECT_NEAR(levels[1].top_hz, 2.0 * levels[0].top_hz, 1e-9);
+  // The split mesh keeps the 2 mm cells at the patch edges (not finer) and is twice as fine
+  // elsewhere.
+  const TyreSurfaceMesh base = make_tyre_surface_mesh(levels[0].spec), fine = make_tyre_surface_mesh(levels[1].spec);
+  const auto smallest = [](const TyreSurfaceMesh& m) {
+    double w = 1.0;
+    for (std::size_t a = 0; a + 1 < m.tread_angle_edges.size(); ++a) w = std::min(w, m.tread_angle_edges[a + 1] - m.tread_angle_edges[a]);
+    return w;
+  };
+  EXPECT_NEAR(smallest(fine), smallest(base), 1e-12);
+  EXPECT_GT(fine.tread_around, 3 * base.tread_around / 2);
+  RecordProperty("base_points", std::to_string(base.points.cols()));
+  RecordProperty("split_points", std::to_string(fine.points.cols()));
+  // The stage: two meshes, velocities on the finer, each anchor on its band's.
+  Eigen::Matrix3Xd receivers(3, 1);
+  receivers << 0.2, 0.29, 0.1;
+  const TyreRadiation radiation(settings, receivers);
+  ASSERT_EQ(radiation.levels(), 2u);
+  EXPECT_EQ(radiation.input_mesh().tread_points, fine.tread_points);
+  EXPECT_EQ(radiation.level_of(4100.0), 0u);
+  EXPECT_EQ(radiation.level_of(4200.0), 1u);
+  // One mesh to 3 kHz, or when the anchors stop below 4.15 kHz (80 km/h, one step per 3.9 mm cell).
+  settings.max_frequency_hz = 3000.0;
+  EXPECT_EQ(radiation_mesh_levels(settings).size(), 1u);
+  settings.max_frequency_hz = 5623.4;
+  settings.sample_rate_hz = 22.222 / (2 * kPi * 0.316 / 512.0);
+  EXPECT_EQ(radiation_mesh_levels(settings).size(), 1u);
+  // Points per wavelength 0: the base for every anchor.
+  settings.sample_rate_hz = 0.0;
+  settings.points_per_wavelength = 0.0;
+  EXPECT_EQ(radiation_mesh_levels(settings).size(), 1u);
+  // A base too coarse for the band (more than an 8-fold split) is an error.
+  settings.points_per_wavelength = 4.0;
+  settings.mesh.around = 8;
+  EXPECT_THROW(radiation_mesh_levels(settings), std::invalid_argument);
+}
+
+// A coarser band's tread cells are unions of the input mesh's: the area-weighted means compose,
+// so belt → input mesh → coarser mesh is belt → coarser mesh, to rounding.
+TEST(TyreRadiationStage, BandMeshesTakeTheBeltsMeansExactly) {
+  TyreSurfaceMeshSpec base;
+  base.geometry = TyreGeometry::deformed;
+  base.across = 16;
+  base.contact_refinement = 10.0;
+  TyreSurfaceMeshSpec split = base;
+  split.tread_split = 2;
+  const TyreSurfaceMesh coarse = make_tyre_surface_mesh(base), fine = make_tyre_surface_mesh(split);
+  const Eigen::SparseMatrix<double> down = tread_to_tread_matrix(fine, coarse);
+  ASSERT_EQ(down.rows(), coarse.tread_points);
+  ASSERT_EQ(down.cols(), fine.tread_points);
+  const Eigen::MatrixXd composed = Eigen::MatrixXd(down * belt_to_tread_matrix(512, 20, fine));
+  const Eigen::MatrixXd direct = Eigen::MatrixXd(belt_to_tread_matrix(512, 20, coarse));
+  EXPECT_LE((composed - direct).cwiseAbs().maxCoeff(), 1e-12);
+  // Every coarse cell is a mean of the fine cells inside it: weights summing to 1.
+  EXPECT_LE(((down * Eigen::VectorXd::Ones(fine.tread_points)).array() - 1.0).abs().maxCoeff(), 1e-14);
+  // Meshes with other rows across do not map.
+  TyreSurfaceMeshSpec other = base;
+  other.across = 12;
+  EXPECT_THROW(tread_to_tread_matrix(fine, make_tyre_surface_mesh(other)), std::invalid_argument);
+}
+
+// Bit for bit with any thread count when the anchors use two meshes (coarse ones here: the
+// base 48 around serves to 2.07 kHz, the split mesh the anchors above).
+TEST(TyreRadiationStage, SameNumbersWithAnyThreadCountOverTwoMeshes) {
+  Eigen::Matrix3Xd receivers(3, 2);
+  receivers << 0.2, 0.0, 0.29, 7.5, 0.1, 1.2;
+  TyreRadiationSettings settings = coarse_settings();
+  settings.max_frequency_hz = 2500.0;
+  settings.anchor_spacing_hz = 250.0;
+  const TyreRadiation probe(settings, receivers);
+  ASSERT_EQ(probe.levels(), 2u);
+  const double fs = 6000.0;
+  Eigen::MatrixXd velocity(600, probe.input_mesh().tread_points);
+  for (Eigen::Index n = 0; n < velocity.rows(); ++n)
+    for (Eigen::Index m = 0; m < velocity.cols(); ++m)
+      velocity(n, m) = std::sin(0.37 * static_cast<double>(n * (1 + m % 11)) + 0.3 * static_cast<double>(m));
+  settings.threads = 1;
+  const RadiatedSound one = TyreRadiation(settings, receivers).radiate(velocity, fs);
+  settings.threads = 3;
+  const RadiatedSound three = TyreRadiation(settings, receivers).radiate(velocity, fs);
+  EXPECT_EQ(one.pressure, three.pressure);
+  EXPECT_EQ(one.sound_power_w, three.sound_power_w);
+  EXPECT_GT(one.pressure.norm(), 0.0);
+  // Velocities on all points are refused when the anchors use more than one mesh.
+  EXPECT_THROW(probe.radiate(Eigen::MatrixXd::Zero(10, probe.input_mesh().points.cols()), fs), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace rollnoise

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/tyre_radiation.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 
 namespace rollnoise {
@@ -54,27 +55,27 @@ TEST(TyreRadiation, MeshReproducesAKnownExteriorField) {
   }
 }
 
-// Issue 10 §3: the band up to 5 kHz, on the undeformed graded mesh (96 around, 16 across, 12
-// sidewall rings; 2948 points) with the sources 1.5 cells deep (tyre_surface_mesh.hpp). The
-// exterior field of a monopole inside the tread near the contact, where the belt moves most and
-// the horn is, at the CPX and SPB receivers (205/55 R16: 0.18 m wide). Asserted within the
-// issue's 6 % at 3 kHz only: at 5 kHz and at the 5 kHz band's upper edge (5623 Hz) this mesh
-// does NOT reach 6 % (measured 1.1–6.1 % at 5 kHz and 3.3–18.6 % at 5623 Hz near the contact once
-// the sources sat 1.5 cells deep; 0.3–5.7 % with the earlier shallow sources, which failed at
-// 1 kHz elsewhere; 1.0–4.8 % at 3 kHz), so those are
-// recorded, not asserted: the gap is named in the README ("Validation of the radiation").
-// Sources far from the contact are recorded at every frequency.
-TEST(TyreRadiation, GradedMeshNearContactFieldsTo3kHzAnd5kHzRecorded) {
-  TyreSurfaceMeshSpec spec;
-  spec.radius = 0.316;
-  spec.width = 0.18;
-  spec.around = 96;
-  spec.across = 16;
-  spec.sidewall_rings = 12;
-  spec.contact_refinement = 10.0;
-  const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
-  const EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true);
-  const double beside = 0.5 * spec.width + 0.2;
+// Issue 10 §3: the band up to 5 kHz on the undeformed graded tyre (96 around, 16 across, 12
+// sidewall rings, 2 mm cells at the contact; 2948 points), on the meshes and with the sources
+// the radiation stage takes (tyre_radiation.hpp: this one to 4.15 kHz, the tread split in 2 with
+// 21 rings above; monopoles to 3 kHz, combined sources above). The exterior field of a monopole inside the tread near the
+// contact, where the belt moves most and the horn is, and of two far from it, at the CPX and SPB
+// receivers (205/55 R16: 0.18 m wide), with the velocity taken at the collocation points.
+// Asserted within the issue's 6 % at 3 kHz, 5 kHz and 5623 Hz, the 5 kHz band's upper edge, for
+// the sources near the contact (measured 1.0–3.6 %); the two far from it recorded (0.2–3.0 %, but
+// 7.2 % at SPB at 3 kHz, 75 Hz from where the source's image cancels its direct sound there and
+// the exact pressure is small). Before issue 10 §3 this mesh with monopoles gave 1.1–6.1 % at
+// 5 kHz and 3.3–18.6 % at 5623 Hz near the contact, up to 25–30 % for the far sources.
+TEST(TyreRadiation, GradedMeshFieldsTo5623Hz) {
+  TyreRadiationSettings settings;
+  settings.mesh.around = 96;
+  settings.mesh.across = 16;
+  settings.mesh.sidewall_rings = 12;
+  settings.mesh.contact_refinement = 10.0;
+  settings.max_frequency_hz = 5623.4;
+  const std::vector<RadiationMeshLevel> levels = radiation_mesh_levels(settings);
+  ASSERT_EQ(levels.size(), 2u);
+  const double beside = 0.5 * settings.mesh.width + 0.2;
   Eigen::Matrix3Xd receivers(3, 3);
   receivers << 0.2, -0.2, 0.0,  // cpx_front, cpx_rear, spb
       beside, beside, 7.5,      //
@@ -89,6 +90,9 @@ TEST(TyreRadiation, GradedMeshNearContactFieldsTo3kHzAnd5kHzRecorded) {
                             {"near_axle", {0.05, 0.02, 0.3}, false},
                             {"tread_ahead", {0.248, 0.03, 0.175}, false}};
   for (double f : {3000.0, 5000.0, 5623.4}) {
+    const TyreSurfaceMeshSpec& spec = levels[f > levels[0].top_hz ? 1 : 0].spec;
+    const TyreSurfaceMesh mesh = make_tyre_surface_mesh(spec);
+    const EquivalentSources model = make_tyre_model(mesh, Medium{}, f > kCombinedSourcesAboveHz);
     const double omega = 2 * kPi * f;
     const double k = omega / Medium{}.sound_speed;
     const Eigen::MatrixXcd transfer = model.transfer(omega, receivers);
@@ -100,7 +104,7 @@ TEST(TyreRadiation, GradedMeshNearContactFieldsTo3kHzAnd5kHzRecorded) {
       for (Eigen::Index r = 0; r < receivers.cols(); ++r) {
         const Complex expected = monopole_over_road(receivers.col(r), source.position, omega, 1.0);
         const double error = std::abs(p(r) - expected) / std::abs(expected);
-        if (source.asserted && f <= 3000.0) {
+        if (source.asserted) {
           EXPECT_LE(error, 0.06) << source.name << ", f = " << f << ", receiver " << r;
         }
         RecordProperty(std::string(source.name) + "_" + std::to_string(static_cast<int>(f)) + "Hz_r" + std::to_string(r),
@@ -123,7 +127,7 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
     const char* name;
     TyreSurfaceMeshSpec spec;
   };
-  std::vector<Case> cases(8);
+  std::vector<Case> cases(10);
   cases[0].name = "default";
   cases[1].name = "graded, 16 across";
   cases[1].spec.contact_refinement = 10.0;
@@ -147,6 +151,14 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
   cases[7].name = "33 around, 9 rings";  // sidewalls with an odd number of points
   cases[7].spec.around = 33;
   cases[7].spec.sidewall_rings = 9;
+  cases[8].name = "deformed, graded, 16 across";  // the runs' base mesh
+  cases[8].spec.geometry = TyreGeometry::deformed;
+  cases[8].spec.contact_refinement = 10.0;
+  cases[8].spec.across = 16;
+  cases[9].name = "deformed, graded, tread split in 2, 21 rings";  // the runs' mesh above 4.1 kHz
+  cases[9].spec = cases[8].spec;
+  cases[9].spec.tread_split = 2;
+  cases[9].spec.sidewall_rings = 21;
   for (const Case& c : cases) {
     const TyreSurfaceMesh mesh = make_tyre_surface_mesh(c.spec);
     const double tolerance = 1e-10 * (mesh.points.rowwise().maxCoeff() - mesh.points.rowwise().minCoeff()).norm();
@@ -156,10 +168,18 @@ TEST(TyreRadiation, MeshIsMirrorSymmetricSourcesIncluded) {
     ASSERT_TRUE(sources.has_value()) << c.name;
     // An odd count across puts one tread row on the plane, mapped to itself.
     EXPECT_EQ(static_cast<int>(points->fixed.size()), c.spec.across % 2 == 1 ? mesh.tread_around : 0) << c.name;
-    // About one source per stride points.
+    // About one source per stride points: within one per tread row and two per sidewall ring
+    // (the x-mirror pairs are chosen together, so a row or ring can gain or lose one).
     EXPECT_NEAR(static_cast<double>(mesh.sources.cols()), static_cast<double>(mesh.points.cols()) / c.spec.source_stride,
-                static_cast<double>(c.spec.across + 2)) << c.name;
+                static_cast<double>(c.spec.across + 2 + 2 * c.spec.sidewall_rings)) << c.name;
     EXPECT_TRUE(EquivalentSources(mesh.sources, mesh.points, mesh.normals, true).mirror_symmetric()) << c.name;
+    // And under x → −x (the plane through the axle across the road), sources and their normals
+    // included: the solve splits into four (symmetry_basis.hpp).
+    const auto across_road = reflection_partners(mesh.points, mesh.normals, 0, tolerance);
+    ASSERT_TRUE(across_road.has_value()) << c.name;
+    ASSERT_TRUE(reflection_partners(mesh.sources, mesh.source_normals, 0, tolerance).has_value()) << c.name;
+    EXPECT_EQ(EquivalentSources(mesh.sources, mesh.points, mesh.normals, true).symmetry_blocks(), 4) << c.name;
+    EXPECT_EQ(make_tyre_model(mesh, Medium{}, true).symmetry_blocks(), 4) << c.name;
   }
 }
 

@@ -328,8 +328,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
       throw InputError(radiation_table.source_of("receivers"), "[radiation] receivers", inside);
     }
   }
-  const Eigen::SparseMatrix<double> sampling =
-      belt_to_tread_matrix(grid.circumferential, grid.lateral, make_tyre_surface_mesh(sound.radiation.mesh));
+  // The belt onto the radiation's input mesh: the finest of its bands' meshes (tyre_radiation.hpp).
+  sound.radiation.sample_rate_hz = 1.0 / dt;
+  const Eigen::SparseMatrix<double> sampling = belt_to_tread_matrix(
+      grid.circumferential, grid.lateral,
+      make_tyre_surface_mesh(sound.enabled ? radiation_mesh_levels(sound.radiation).back().spec : sound.radiation.mesh));
   Eigen::MatrixXd tread_velocity;
   // The energy budget (issue 10 §1) of a run with radiation: the belt's velocity spectra, over
   // the whole belt and near the contact, gathered while the response stage runs.

@@ -81,6 +81,14 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
   s.radiation.mesh.sidewall_rings = static_cast<int>(radiation.integer("sidewall_rings", 12, 1, 256));
   s.radiation.mesh.contact_refinement = radiation.between("contact_refinement", 0.999, 1000.001, 10.0);
   s.radiation.threads = static_cast<int>(radiation.integer("threads", 0, 0, 1024));
+  // Finer meshes for the upper anchors (tyre_radiation.hpp): the tread split in 2 (4, …) above
+  // c/(n·2πR/mesh_around); 0: the mesh above for every anchor.
+  s.radiation.points_per_wavelength = radiation.between("points_per_wavelength", -0.001, 20.0, 4.0);
+  // The anchors above this take combined sources (equivalent_sources.hpp), those at or below
+  // monopoles (0: combined sources for every anchor).
+  s.radiation.combined_sources_above_hz = radiation.between("combined_sources_above", -0.001, 1e6, kCombinedSourcesAboveHz);
+  if (s.radiation.points_per_wavelength < 2.0 && s.radiation.points_per_wavelength != 0.0)
+    radiation.fail("points_per_wavelength", "must be 0 (one mesh) or at least 2");
   // The radiating body: the loaded tyre, flattened over the run's mean contact patch (the
   // caller fills in the patch and the indentation once the contact is solved), or the
   // undeformed cylinder of earlier versions.
@@ -197,12 +205,31 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     flat_y1 = flat ? std::max(flat_y1, y) : y;
     flat = true;
   }
+  // The meshes per band (coarse to fine; the last is the one the velocities come in on).
+  nlohmann::json meshes = nlohmann::json::array();
+  for (std::size_t l = 0; l < radiation.levels(); ++l) {
+    std::size_t anchors = 0;
+    double seconds = 0.0;
+    for (std::size_t a = 0; a < sound.anchor_mesh.size(); ++a)
+      if (sound.anchor_mesh[a] == l) {
+        ++anchors;
+        seconds += sound.anchor_seconds[a];
+      }
+    meshes.push_back({{"collocation_points", radiation.level_mesh(l).points.cols()},
+                      {"equivalent_sources", radiation.level_mesh(l).sources.cols()},
+                      {"tread_split", radiation.level_spec(l).tread_split},
+                      {"sidewall_rings", radiation.level_spec(l).sidewall_rings},
+                      {"up_to_hz", radiation.level_top_hz(l)},
+                      {"anchors", anchors},
+                      {"anchor_time_s", seconds}});  // summed over the anchors, each in its thread
+  }
   result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
                          {"flat_length_m", flat_x1 - flat_x0},
                          {"flat_width_m", flat_y1 - flat_y0},
                          {"anchors", radiation.anchors(sample_rate).size()},
                          {"collocation_points", radiation.mesh().points.cols()},
                          {"equivalent_sources", radiation.mesh().sources.cols()},
+                         {"meshes", meshes},
                          {"geometry", settings.radiation.mesh.geometry == TyreGeometry::deformed ? "deformed" : "undeformed"},
                          {"axle_height_m", radiation.mesh().axle_height},
                          {"time_s", radiation_seconds}};
