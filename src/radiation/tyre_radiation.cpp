@@ -33,8 +33,8 @@ constexpr double kNyquistFraction = 0.99;
 // 100 Hz on the runs' mesh); η₀ about the inverse of the sources' depth (2–3 cm) balances the
 // two there. With η₀ = 50 the interior-monopole checks (test_deformed_mesh.cpp, on the stage's
 // meshes) stayed within 1.4 % of the incoherent direct + image amplitude below 1.5 kHz and within
-// 4.2 % at every anchor to 5623 Hz (a one-off scan); η₀ = 200 did worse above 4 kHz (7 % at
-// 5.3 kHz), and on the cylinder at 3 kHz a large η₀ brings back the monopoles' resonances.
+// 4.2 % at every anchor to 5623 Hz (a one-off scan); η₀ = 200 did worse above 4 kHz (on a first
+// version of the split mesh, 7.3 % against 3.5 % at 5.3 kHz relative to the exact pressure).
 constexpr double kCouplingFloor = 50.0;
 
 // What one anchor's solve gives: the transfer to the receivers, and its hat-weighted share of
