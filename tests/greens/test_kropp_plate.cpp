@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
+#include "gauss_legendre.hpp"
 #include "core/case_file.hpp"
 #include "greens/kropp_plate.hpp"
 #include "greens/plate_factory.hpp"
@@ -53,33 +54,8 @@ PlateParameters tyre_like(int M, int N) {
 // ---------------------------------------------------------------------------------------------
 // Quadrature helpers.
 
-struct Rule {
-  std::vector<double> nodes, weights;  // on [−1, 1]
-};
-
-// Gauss–Legendre by Newton on P_n.
-Rule gauss_legendre(int n) {
-  Rule rule;
-  for (int i = 1; i <= n; ++i) {
-    double x = std::cos(pi * (i - 0.25) / (n + 0.5));
-    double dp = 0.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / dp;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.nodes.push_back(x);
-    rule.weights.push_back(2.0 / ((1.0 - x * x) * dp * dp));
-  }
-  return rule;
-}
+using Rule = test::GaussRule;
+using test::gauss_legendre;
 
 template <class F>
 double composite(F f, double lo, double hi, int panels, const Rule& rule) {

@@ -13,6 +13,7 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include "gauss_legendre.hpp"
 #include "contact/static_contact.hpp"
 #include "greens/tread_compliance.hpp"
 
@@ -28,33 +29,8 @@ const double kLove = (1.0 - kNu * kNu) / (pi * kE);  // (1 − ν²)/(πE), m/N 
 // ---------------------------------------------------------------------------------------------
 // Independent quadrature of the Boussinesq kernel over the rectangle |ξ| ≤ a, |η| ≤ b.
 
-struct Rule {
-  std::vector<double> nodes, weights;  // on [−1, 1]
-};
-
-// Gauss–Legendre by Newton on P_n (Golub–Welsch accuracy is not needed: 1e-15 here).
-Rule gauss_legendre(int n) {
-  Rule rule;
-  for (int i = 1; i <= n; ++i) {
-    double x = std::cos(pi * (i - 0.25) / (n + 0.5));
-    double dp = 0.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / dp;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.nodes.push_back(x);
-    rule.weights.push_back(2.0 / ((1.0 - x * x) * dp * dp));
-  }
-  return rule;
-}
+using Rule = test::GaussRule;
+using test::gauss_legendre;
 
 // Composite Gauss–Legendre of f over [lo, hi] with `panels` panels.
 template <class F>

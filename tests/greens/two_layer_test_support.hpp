@@ -4,37 +4,11 @@
 #include <numbers>
 #include <vector>
 
+#include "gauss_legendre.hpp"
 #include "greens/two_layer_tyre.hpp"
 
 namespace rollnoise::test {
 
-struct GaussRule {
-  std::vector<double> nodes, weights;  // on [−1, 1]
-};
-
-// Gauss–Legendre by Newton on P_n.
-inline GaussRule gauss_legendre(int n) {
-  GaussRule rule;
-  for (int i = 1; i <= n; ++i) {
-    double x = std::cos(std::numbers::pi * (i - 0.25) / (n + 0.5));
-    double dp = 0.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / dp;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.nodes.push_back(x);
-    rule.weights.push_back(2.0 / ((1.0 - x * x) * dp * dp));
-  }
-  return rule;
-}
 
 // Nodes and weights of a composite rule: `panels` equal panels on [lo, hi], `rule` on each.
 struct Quadrature {
