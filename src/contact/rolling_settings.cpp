@@ -79,10 +79,22 @@ double band_top_edge(double band_top) {
   return 1000.0 * std::pow(10.0, x / 10.0) * std::pow(10.0, 1.0 / 20.0);
 }
 
+namespace {
+
+// The rule both choices serve: one step of length dx/p carries the band when
+// 0.99·p·v/(2·dx) ≥ f_2, i.e. p/dx ≥ 2·f_2/(0.99·v). Returns 2·f_2·length/(0.99·v), the least
+// (real) number of steps per `length` of travel; the radiation stage computes up to 0.99 of
+// the Nyquist frequency.
+double steps_needed(double band_top, double length, double speed) {
+  return 2.0 * band_top_edge(band_top) * length / (0.99 * speed);
+}
+
+}  // namespace
+
 int circumferential_points_for_band(double band_top, double circumference, double speed) {
   if (!(band_top > 0.0)) throw std::invalid_argument("circumferential_points_for_band: band_top must be > 0");
-  // 0.99·v·N/(2·L) ≥ f_2, N even; the allowance keeps an exact fit from rounding up.
-  const double needed = 2.0 * band_top_edge(band_top) * circumference / (0.99 * speed);
+  // N even; the allowance keeps an exact fit from rounding up.
+  const double needed = steps_needed(band_top, circumference, speed);
   const double half = std::ceil(0.5 * needed * (1.0 - 1e-12));
   if (!(half < 1e9)) throw std::invalid_argument("circumferential_points_for_band: the grid would be too large");
   return 2 * static_cast<int>(half);
@@ -90,8 +102,8 @@ int circumferential_points_for_band(double band_top, double circumference, doubl
 
 int substeps_for_band(double band_top, double dx, double speed) {
   if (band_top <= 0.0) return 1;
-  // 0.99·p·v/(2·dx) ≥ f_2; the small allowance keeps an exact fit from rounding up.
-  const double needed = 2.0 * band_top_edge(band_top) * dx / (0.99 * speed);
+  // The small allowance keeps an exact fit from rounding up.
+  const double needed = steps_needed(band_top, dx, speed);
   return std::max(1, static_cast<int>(std::ceil(needed * (1.0 - 1e-12))));
 }
 

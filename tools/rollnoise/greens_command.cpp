@@ -33,6 +33,14 @@ namespace {
 constexpr int kMaxFrequencies = 100000;
 constexpr std::size_t kMaxDistances = 10000;
 
+// n values evenly spaced from a to b inclusive (a alone when n = 1).
+std::vector<double> evenly_spaced(double a, double b, long long n) {
+  std::vector<double> f(static_cast<std::size_t>(n));
+  for (long long i = 0; i < n; ++i)
+    f[static_cast<std::size_t>(i)] = n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
+  return f;
+}
+
 // "F1:F2:N": N frequencies evenly spaced from F1 to F2 inclusive, Hz.
 std::vector<double> parse_frequencies(const std::string& text) {
   const auto bad = [&](const std::string& why) -> InputError {
@@ -60,10 +68,7 @@ std::vector<double> parse_frequencies(const std::string& text) {
   if (!std::isfinite(f1) || !std::isfinite(f2) || f1 < 0.0) throw bad("F1 and F2 must be finite and F1 >= 0");
   if (n < 1 || n > kMaxFrequencies) throw bad("N must be from 1 to " + std::to_string(kMaxFrequencies));
   if (n == 1 ? f2 != f1 : !(f2 > f1)) throw bad("F2 must be above F1 (or equal to it with N = 1)");
-  std::vector<double> f(static_cast<std::size_t>(n));
-  for (long long i = 0; i < n; ++i)
-    f[static_cast<std::size_t>(i)] = n == 1 ? f1 : f1 + (f2 - f1) * static_cast<double>(i) / static_cast<double>(n - 1);
-  return f;
+  return evenly_spaced(f1, f2, n);
 }
 
 std::vector<double> checked_distances(const GreensOptions& options, const CentreLineResponse& response) {
@@ -191,9 +196,7 @@ int run_greens(const GreensOptions& options) {
   const std::vector<double> distances = checked_distances(options, *response);
   const double top_hz = response->default_top_frequency_hz();
   const std::vector<double> frequencies =
-      options.frequencies.empty()
-          ? parse_frequencies("0:" + std::to_string(top_hz) + ":501")
-          : parse_frequencies(options.frequencies);
+      options.frequencies.empty() ? evenly_spaced(0.0, top_hz, 501) : parse_frequencies(options.frequencies);
 
   const auto nf = static_cast<Eigen::Index>(frequencies.size());
   const auto nd = static_cast<Eigen::Index>(distances.size());
@@ -205,6 +208,11 @@ int run_greens(const GreensOptions& options) {
       mobility(i, j) = std::complex<double>(0.0, omega) * receptance(i, j);  // Y = iω·α
     }
   }
+  // The static compliance per distance: the table's 0 Hz row when it has one.
+  std::vector<double> static_compliance(distances.size());
+  for (std::size_t j = 0; j < distances.size(); ++j)
+    static_compliance[j] = frequencies.front() == 0.0 ? receptance(0, static_cast<Eigen::Index>(j)).real()
+                                                      : response->receptance(distances[j], 0.0).real();
   if (!receptance.allFinite())
     throw InputError(options.model, "", "the model's receptance is not finite at these frequencies; check its values");
 
@@ -265,8 +273,8 @@ int run_greens(const GreensOptions& options) {
   summary["description"] = response->description();
   summary["circumference_m"] = response->circumference();
   summary["static_compliance_m_per_N"] = nlohmann::json::array();
-  for (const double x : distances)
-    summary["static_compliance_m_per_N"].push_back({{"distance_m", x}, {"value", response->receptance(x, 0.0).real()}});
+  for (std::size_t j = 0; j < distances.size(); ++j)
+    summary["static_compliance_m_per_N"].push_back({{"distance_m", distances[j]}, {"value", static_compliance[j]}});
   summary["settings"] = {{"frequencies", frequencies.size()},
                          {"frequency_range_hz", {frequencies.front(), frequencies.back()}},
                          {"distances_m", distances},
@@ -278,7 +286,7 @@ int run_greens(const GreensOptions& options) {
   staged.commit();
   std::printf("rollnoise: wrote %s (receptance.csv, mobility.csv, greens.h5, summary.json and plots): %s, static point "
               "compliance %.4g m/N\n",
-              out.string().c_str(), response->model().c_str(), response->receptance(distances.front(), 0.0).real());
+              out.string().c_str(), response->model().c_str(), static_compliance.front());
   return 0;
 }
 
