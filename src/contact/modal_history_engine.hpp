@@ -1,11 +1,12 @@
 #pragma once
-// The fast history engine for the rolling plate (history = "modal"): every mode is advanced by
-// the exact recursion of its sampled kernel, X ← Φ̃·X + Γ̃·f (rolling_plate.hpp), and the
-// circumferential orders are taken to and from the window by FFTs over the whole
-// circumference. Per step: 2·N FFTs of length Nθ, one 2×2 update per mode and two small
-// products with the lateral shapes. All buffers and FFTW plans are made in the constructor;
-// nothing is allocated in the step loop. FFTW_ESTIMATE plans, so results do not depend on
-// run-time timing.
+// The fast history engine of the rolling tyre (history = "modal"): every pole of every mode is
+// advanced by its exact one-state recursion (rolling_modes.hpp),
+//   y_r ← a_r·y_r + b_r·f_ml,   a_r = e^{q_r Δt},   b_r = ρ_r (e^{q_r Δt} − 1)/q_r,
+// and the circumferential orders are taken to and from the window by FFTs over the whole
+// circumference. Per step: 2·N FFTs of length Nθ, one complex multiply-add per pole and two
+// small products with the lateral shapes. All buffers and FFTW plans are made in the
+// constructor; nothing is allocated in the step loop. FFTW_ESTIMATE plans, so results do not
+// depend on run-time timing.
 #include <complex>
 #include <memory>
 #include <vector>
@@ -13,7 +14,7 @@
 #include <Eigen/Core>
 
 #include "contact/history_engine.hpp"
-#include "contact/rolling_plate.hpp"
+#include "contact/rolling_modes.hpp"
 
 namespace rollnoise {
 
@@ -22,7 +23,7 @@ class RealFftBatch;
 class ModalHistoryEngine : public HistoryEngine {
  public:
   // `preload`: the steady force on each window point for all t < 0 (steady rolling).
-  ModalHistoryEngine(const RollingPlate& plate, const Eigen::VectorXd& preload);
+  ModalHistoryEngine(const RollingModes& modes, const Eigen::VectorXd& preload);
   ~ModalHistoryEngine() override;
   ModalHistoryEngine(const ModalHistoryEngine&) = delete;
   ModalHistoryEngine& operator=(const ModalHistoryEngine&) = delete;
@@ -31,23 +32,29 @@ class ModalHistoryEngine : public HistoryEngine {
   void history(Eigen::Ref<Eigen::VectorXd> u0) const override;
   void advance(const Eigen::Ref<const Eigen::VectorXd>& force) override;
 
-  // Modal displacement and velocity, x_mn and ẋ_mn after the last advance (mode index as in
-  // RollingPlate::mode_index), in the rotating window frame.
-  const std::vector<Eigen::Vector2cd>& states() const noexcept { return states_; }
+  // After the last advance, mode r (RollingModes::mode_index) in the fixed frame: its amplitude
+  // X = Σ y + d·f, and ∂X/∂t at fixed positions, Σ q·y + (Σρ)·f (ẏ = q·y + ρ·f: the
+  // deformation swept past the fixed point and the material's own motion together).
+  std::complex<double> amplitude(std::size_t r) const;
+  std::complex<double> rate(std::size_t r) const;
 
  private:
-  // f_mn = Σ_q sin(k_n y_q) e^{−i k_m x_q} F_q into modal_force_.
+  // f_ml = Σ_q φ_l(y_q) e^{−i k_m x_q} F_q into modal_force_.
   void project(const Eigen::Ref<const Eigen::VectorXd>& force);
 
-  const RollingPlate& plate_;
+  const RollingModes& modes_;
   std::unique_ptr<RealFftBatch> fft_;
-  std::vector<Eigen::Matrix2cd> step_;      // Φ̃ per mode
-  std::vector<Eigen::Vector2cd> input_;     // Γ̃ per mode
-  std::vector<Eigen::RowVector2cd> output_; // c·Φ̃ per mode: history from the previous state
-  std::vector<Eigen::Vector2cd> states_;
+  // Poles of mode r at first_pole_[r] … first_pole_[r + 1] − 1.
+  std::vector<std::size_t> first_pole_;
+  std::vector<std::complex<double>> decay_;   // a = e^{qΔt}
+  std::vector<std::complex<double>> input_;   // b = ρ(e^{qΔt} − 1)/q
+  std::vector<std::complex<double>> rate_;    // q
+  std::vector<std::complex<double>> states_;  // y
+  std::vector<double> direct_;                      // d per mode
+  std::vector<std::complex<double>> residue_sum_;  // Σρ per mode
   std::vector<std::complex<double>> modal_force_;
-  mutable Eigen::MatrixXd window_modes_;    // Nw × N
-  mutable Eigen::MatrixXd window_field_;    // Nw × Ny
+  mutable Eigen::MatrixXd window_modes_;  // Nw × N
+  mutable Eigen::MatrixXd window_field_;  // Nw × Ny
 };
 
 }  // namespace rollnoise

@@ -124,10 +124,10 @@ StaticContact steady_nonlinear_contact(const Eigen::MatrixXd& compliance, const 
 
 }  // namespace
 
-SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                    double load, const NonlinearTread* nonlinear) {
-  const TyreGrid& grid = plate.grid();
-  const Eigen::MatrixXd compliance = local_compliance + plate.rolling_compliance();
+  const TyreGrid& grid = modes.grid();
+  const Eigen::MatrixXd compliance = local_compliance + modes.rolling_compliance();
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd compression = Eigen::VectorXd::Zero(h.size());
   const StaticContact contact = nonlinear ? steady_nonlinear_contact(compliance, h, load, *nonlinear, compression)
@@ -144,40 +144,43 @@ SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::Matri
   return steady;
 }
 
-TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
                                        ProgressReporter* progress, const NonlinearTread* nonlinear) {
-  const TyreGrid& grid = plate.grid();
+  const TyreGrid& grid = modes.grid();
   const Eigen::Index points = grid.points();
-  const double dt = plate.time_step();
-  const int substeps = plate.substeps();
+  const double dt = modes.time_step();
+  const int substeps = modes.substeps();
   if (std::abs(dt * substeps * settings.speed - grid.dx()) > 1e-9 * grid.dx())
-    throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the plate's sub-steps");
+    throw std::invalid_argument("rolling tyre: the time step must be dx/(p·v), p the sub-steps per cell");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
   const std::size_t samples = steps + 1;
   const RoadFilter road_filter = make_road_filter(settings.road_sampling, grid.dx());
 
+  if (modes.tyre().includes_tread() && (nonlinear || local_compliance.cwiseAbs().maxCoeff() > 0.0))
+    throw std::invalid_argument("rolling tyre: the " + modes.tyre().name() +
+                                " model includes its tread's local deformation; a separate tread is not allowed");
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
     throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
-  const SteadyRolling steady = solve_steady_rolling(plate, local_compliance, settings.static_load, nonlinear);
+  const SteadyRolling steady = solve_steady_rolling(modes, local_compliance, settings.static_load, nonlinear);
 
   std::unique_ptr<HistoryEngine> engine;
   std::shared_ptr<const DiscreteKernel> kernel;
   Eigen::MatrixXd g0;
   if (settings.history == HistoryKind::direct) {
-    auto dense = std::make_shared<DiscreteKernel>(plate.sheared_kernel(samples));
+    auto dense = std::make_shared<DiscreteKernel>(modes.sheared_kernel(samples));
     dense->lags[0] += local_compliance;
     dense->total += local_compliance;
     kernel = dense;
     g0 = kernel->lags[0];
     engine = std::make_unique<DirectHistoryEngine>(kernel, samples, steady.force);
   } else if (settings.history == HistoryKind::modal || settings.history == HistoryKind::automatic) {
-    g0 = plate.sheared_lag(0) + local_compliance;
-    engine = std::make_unique<ModalHistoryEngine>(plate, steady.force);
+    g0 = modes.sheared_lag(0) + local_compliance;
+    engine = std::make_unique<ModalHistoryEngine>(modes, steady.force);
   } else {
     throw InputError("", "[rolling] history",
                      "engine \"" + to_string(settings.history) +
-                         "\" is not available for the plate model; allowed: \"auto\", \"modal\", \"direct\"");
+                         "\" is not available for the rolling tyre; allowed: \"auto\", \"modal\", \"direct\"");
   }
   // G0 is slightly non-symmetric: within one step the material moves by a cell. Its symmetric
   // part S is taken at the current step, so each step is an exact symmetric LCP; its skew part

@@ -1,5 +1,6 @@
 #pragma once
-// The rolling tyre (MODEL.md §4): a Kropp plate with a local tread compliance, rolling at
+// The rolling tyre (MODEL.md §4): any translation-invariant tyre model (rolling_modes.hpp: the
+// Kropp plate with a local tread compliance, or a model that includes its tread), rolling at
 // constant speed over a road, one exact contact problem per step over the fixed contact window.
 //
 // The axle height is fixed by steady rolling on a smooth road: the steady force F_s solves the
@@ -13,7 +14,7 @@
 #include <Eigen/Core>
 
 #include "contact/history_engine.hpp"
-#include "contact/rolling_plate.hpp"
+#include "contact/rolling_modes.hpp"
 
 namespace rollnoise {
 
@@ -87,10 +88,10 @@ struct NonlinearTread {
   double exponent = 1.0;      // n ≥ 1
 };
 
-SteadyRolling solve_steady_rolling(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                    double load, const NonlinearTread* nonlinear = nullptr);
 
-TyreContactTrace simulate_rolling_tyre(const RollingPlate& plate, const Eigen::MatrixXd& local_compliance,
+TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
                                        ProgressReporter* progress = nullptr,
                                        const NonlinearTread* nonlinear = nullptr);

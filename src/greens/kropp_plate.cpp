@@ -109,6 +109,14 @@ SdofOscillator KroppPlate::mode_oscillator(int m, int n) const {
   return SdofOscillator{1.0, p_.loss_factor * w, w * w};
 }
 
+double KroppPlate::lateral_shape(int l, double y) const { return std::sin(wavenumber_y(l + 1) * y); }
+
+PoleResidueResponse KroppPlate::mode_response(int m, int l, double /*cell_length*/, double /*cell_width*/) const {
+  PoleResidueResponse poles = oscillator_poles(mode_oscillator(m, l + 1));
+  for (auto& residue : poles.residues) residue /= modal_mass_;
+  return poles;
+}
+
 double KroppPlate::check_lateral(double y, const char* name) const {
   // Grid positions computed as (j + ½)·Δy may overshoot b by a rounding error: allow that.
   const double slack = 1e-9 * p_.width;

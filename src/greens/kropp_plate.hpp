@@ -23,6 +23,7 @@
 #include <span>
 #include <vector>
 
+#include "greens/modal_tyre.hpp"
 #include "greens/sdof_oscillator.hpp"
 
 namespace rollnoise {
@@ -42,13 +43,13 @@ struct PlateParameters {
   int lateral_modes = 0;              // N: n = 1 … N
 };
 
-class KroppPlate {
+class KroppPlate final : public ModalTyre {
  public:
   // Validates the parameters (std::invalid_argument naming the parameter).
   explicit KroppPlate(const PlateParameters& parameters);
 
   const PlateParameters& parameters() const noexcept { return p_; }
-  double circumference() const noexcept;  // L = 2πR
+  double circumference() const noexcept override;  // L = 2πR
   double modal_mass() const noexcept;     // m''·L·b/2, kg
   double wavenumber_x(int m) const noexcept;
   double wavenumber_y(int n) const noexcept;
@@ -77,6 +78,17 @@ class KroppPlate {
   // h_mn(t) / modal_mass() with w_0 = 1, w_m = 2, and h_mn the impulse response of
   // mode_oscillator(m, n) = {mass 1, damping 2ζω_mn = η·ω_mn, stiffness ω_mn²}.
   SdofOscillator mode_oscillator(int m, int n) const;
+
+  // ModalTyre (modal_tyre.hpp), exactly: mode (m, l) is mode_oscillator(m, l + 1) as a
+  // conjugate pair of poles, divided by the modal mass; lateral shape l is sin(k_{l+1} y). Point
+  // responses: the plate is thin, its point response finite, so cell sizes are ignored.
+  std::string name() const override { return "plate"; }
+  double width() const override { return p_.width; }
+  int orders() const override { return p_.circumferential_modes; }
+  int lateral_modes() const override { return p_.lateral_modes; }
+  double lateral_shape(int l, double y) const override;
+  PoleResidueResponse mode_response(int m, int l, double cell_length, double cell_width) const override;
+  bool includes_tread() const override { return false; }
 
  private:
   // Σ_n s_n Σ_m c_m·f_mn with c_m = w_m cos(k_m dx)/modal_mass, s_n = sin(k_n y) sin(k_n y0)

@@ -10,48 +10,40 @@
 // itself moves along its normal. Material sliding along a steady wavy surface moves
 // tangentially and pushes no air (a tyre rolling steadily on a smooth road is silent), while a
 // bump fixed on the tread radiates at the rotation harmonics although the material carrying
-// it has no radial velocity at all. In the modal form of rolling_plate.hpp each fixed-frame
-// mode carries the phase e^{iω_m t} of the material passing at ω_m = k_m·v:
-//   X_mn = e^{iω_m t}·a_mn,   ∂X_mn/∂t = e^{iω_m t}·ȧ_mn + iω_m·X_mn,
-// the first term being the material's own rate (the engine's second state) and the second the
-// deformation swept past. Only the belt (the plate) is included: the local tread deformation is
-// instantaneous and confined to the patch.
+// it has no radial velocity at all. In the modal form of rolling_modes.hpp each fixed-frame
+// mode amplitude is a sum of pole states y with ẏ = q·y + ρ·f, q = p + iω_m, ω_m = k_m·v: the
+// iω_m part is the deformation swept past, the rest the material's own rate
+// (ModalHistoryEngine::rate). Only the structure's own modes are included: a separate tread's
+// local deformation is instantaneous and confined to the patch.
 #include <complex>
 #include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "contact/rolling_plate.hpp"
+#include "contact/rolling_modes.hpp"
 
 namespace rollnoise {
 
 class ModalHistoryEngine;
 class RealFftBatch;
 
-// ∂X/∂t at a fixed position of a mode that travels past at `passing_rate` ω (rad/s), from its
-// fixed-frame amplitude X and the material's own rate e^{iωt}·ȧ.
-inline std::complex<double> fixed_position_rate(std::complex<double> amplitude, std::complex<double> material_rate,
-                                                double passing_rate) {
-  return material_rate + std::complex<double>(0.0, passing_rate) * amplitude;
-}
-
 class SurfaceResponse {
  public:
   // Starts from steady rolling under the window forces `preload` (as the contact run does).
-  // Lateral positions: the plate's, y_j = (j + ½)·b/Ny over the whole belt width.
-  SurfaceResponse(const RollingPlate& plate, const Eigen::VectorXd& preload, int lateral_points);
+  // Lateral positions: y_j = (j + ½)·b/Ny over the whole width of the tyre's lateral shapes.
+  SurfaceResponse(const RollingModes& modes, const Eigen::VectorXd& preload, int lateral_points);
   ~SurfaceResponse();
   SurfaceResponse(const SurfaceResponse&) = delete;
   SurfaceResponse& operator=(const SurfaceResponse&) = delete;
 
   // A radial out-of-roundness of the tread that rotates with the tyre (a geometric deviation,
   // not a deformation: it has no dynamics of its own), added to the surface:
-  //   ε(θ, y) = amplitude·cos(k_m θ + phase)·sin(k_n y),  θ the material coordinate at t = 0.
-  // Order 0 ≤ m ≤ M, lateral mode 1 ≤ n ≤ N. It radiates at the passing rate m·Ω. The contact
+  //   ε(θ, y) = amplitude·cos(k_m θ + phase)·φ_l(y),  θ the material coordinate at t = 0.
+  // Order 0 ≤ m ≤ M, lateral shape 0 ≤ l < N (φ_l of the tyre model). It radiates at the passing rate m·Ω. The contact
   // solver does not see it: use it on a tyre out of contact, or for deviations small against
   // the texture.
-  void add_out_of_roundness(int order, int lateral_mode, double amplitude, double phase);
+  void add_out_of_roundness(int order, int lateral, double amplitude, double phase);
 
   // Applies the window forces of the next step and evaluates the surface: displacement (m) and
   // velocity ∂u/∂t at fixed positions (m/s), each Ny × Nθ (row j: lateral position y_j; column
@@ -61,12 +53,12 @@ class SurfaceResponse {
   double lateral_position(int j) const;
 
  private:
-  const RollingPlate& plate_;
-  std::unique_ptr<ModalHistoryEngine> modes_;
+  const RollingModes& modes_;
+  std::unique_ptr<ModalHistoryEngine> engine_;
   std::unique_ptr<RealFftBatch> fft_;
-  Eigen::MatrixXd shapes_;  // sin(k_n y_j): Ny × N
+  Eigen::MatrixXd shapes_;  // φ_l(y_j): Ny × N
   Eigen::MatrixXd around_;  // N × Nθ scratch
-  // Out-of-roundness per mode, in the engine's fixed-frame modal scale (× modal mass / weight),
+  // Out-of-roundness per mode, in the engine's fixed-frame modal amplitude (÷ weight),
   // advanced by e^{iω_m Δt} each step; empty when there is none.
   std::vector<std::complex<double>> out_of_round_;
   std::vector<std::complex<double>> out_of_round_step_;

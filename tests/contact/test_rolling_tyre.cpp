@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "contact/rolling_tyre.hpp"
+#include "greens/kropp_plate.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
 
@@ -62,11 +63,42 @@ class Flat : public RoadSurface {
 
 Eigen::MatrixXd tread(const TyreGrid& g) { return winkler_compliance(g.points(), g.dx(), g.dy(), 4e8); }
 
+// The plate through the common rolling path (its modes as poles) against the plate's own modal
+// form, written out here: G[k](p, q) = Σ_mn w_m Re(e^{ik_m Δx}·∫ e^{iω_m τ} h_mn)·sin sin / M with
+// h_mn the oscillator's closed form (sdof_oscillator.cpp), as RollingPlate computed it before
+// the models shared one path.
+TEST(RollingTyre, PlateModesEqualThePlatesOwnModalSum) {
+  const KroppPlate plate(small_plate(0.15));
+  const TyreGrid grid = small_grid();
+  const double speed = 20.0, dt = grid.dx() / (2 * speed);
+  const RollingModes rolling(plate, grid, dt, 2);
+  for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{7}}) {
+    const Eigen::MatrixXd lag = rolling.sheared_lag(k);
+    double worst = 0.0;
+    for (int jp = 0; jp < grid.lateral; ++jp)
+      for (int ip = 0; ip < grid.window; ++ip)
+        for (int jq = 0; jq < grid.lateral; ++jq)
+          for (int iq = 0; iq < grid.window; ++iq) {
+            double sum = 0.0;
+            for (int n = 1; n <= plate.parameters().lateral_modes; ++n)
+              for (int m = 0; m <= plate.parameters().circumferential_modes; ++m) {
+                const double omega = plate.wavenumber_x(m) * speed;
+                const auto h = plate.mode_oscillator(m, n).phase_integral(omega, static_cast<double>(k) * dt, static_cast<double>(k + 1) * dt);
+                const auto phase = std::polar(1.0, plate.wavenumber_x(m) * (ip - iq) * grid.dx());
+                sum += (m == 0 ? 1.0 : 2.0) * (phase * h).real() * std::sin(plate.wavenumber_y(n) * grid.y(jp)) *
+                       std::sin(plate.wavenumber_y(n) * grid.y(jq)) / plate.modal_mass();
+              }
+            worst = std::max(worst, std::abs(sum - lag(ip + grid.window * jp, iq + grid.window * jq)));
+          }
+    EXPECT_LT(worst, 1e-11 * lag.cwiseAbs().maxCoeff()) << "lag " << k;
+  }
+}
+
 TEST(RollingTyre, ModalEngineEqualsDirect) {
   const KroppPlate plate(small_plate(0.15));
   const TyreGrid grid = small_grid();
   const double speed = 20.0;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   TyreRunSettings settings{speed, 60 * grid.dx() / speed, 1500.0, HistoryKind::direct};
   const Bumps road;
   const TyreContactTrace direct = simulate_rolling_tyre(rolling, tread(grid), road, settings);
@@ -87,7 +119,7 @@ TEST(RollingTyre, RoughRoadKeepsTheContactConditionsAtEveryStep) {
   const KroppPlate plate(small_plate(0.1));
   const TyreGrid grid = small_grid();
   const double speed = 22.2;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   for (const Eigen::MatrixXd& local :
        {tread(grid), halfspace_compliance(grid.positions(), grid.dx(), grid.dy(), 4e6, 0.48)}) {
     const TyreContactTrace t =
@@ -107,7 +139,7 @@ TEST(RollingTyre, HalfspaceTreadModalEqualsDirect) {
   const KroppPlate plate(small_plate(0.1));
   const TyreGrid grid = small_grid();
   const double speed = 15.0;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd local = halfspace_compliance(grid.positions(), grid.dx(), grid.dy(), 4e6, 0.48);
   TyreRunSettings settings{speed, 40 * grid.dx() / speed, 2500.0, HistoryKind::direct};
   const TyreContactTrace direct = simulate_rolling_tyre(rolling, local, Bumps(), settings);
@@ -122,7 +154,7 @@ TEST(RollingTyre, NonlinearTreadWithExponentOneIsTheWinklerTread) {
   const KroppPlate plate(small_plate(0.1));
   const TyreGrid grid = small_grid();
   const double speed = 22.2;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   const double k_w = 4e8;
   const TyreRunSettings settings{speed, 80 * grid.dx() / speed, 3200.0, HistoryKind::modal};
   const TyreContactTrace linear = simulate_rolling_tyre(rolling, tread(grid), Bumps(), settings);
@@ -148,7 +180,7 @@ TEST(RollingTyre, SmoothRoadKeepsTheSteadyState) {
   const KroppPlate plate(small_plate(0.15));
   const TyreGrid grid = small_grid();
   const double speed = 22.2;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   const double load = 3200.0;
   const TyreContactTrace t =
       simulate_rolling_tyre(rolling, tread(grid), Flat(), {speed, 100 * grid.dx() / speed, load, HistoryKind::modal});
@@ -167,7 +199,7 @@ TEST(RollingTyre, SubStepsModalEngineEqualsDirect) {
   const TyreGrid grid = small_grid();
   const double speed = 20.0;
   const int p = 3;
-  const RollingPlate rolling(plate, grid, grid.dx() / (p * speed), p);
+  const RollingModes rolling(plate, grid, grid.dx() / (p * speed), p);
   EXPECT_NEAR(rolling.speed(), speed, 1e-12 * speed);
   EXPECT_NEAR(rolling.passing_rate(5), 2 * M_PI * 5 / grid.circumference() * speed, 1e-9);
   TyreRunSettings settings{speed, 60 * grid.dx() / speed, 1500.0, HistoryKind::direct};
@@ -181,7 +213,7 @@ TEST(RollingTyre, SubStepsModalEngineEqualsDirect) {
   EXPECT_LE((modal.displacement - direct.displacement).cwiseAbs().maxCoeff(),
             1e-9 * direct.displacement.cwiseAbs().maxCoeff());
   // The wrong time step for the plate's sub-steps is refused.
-  EXPECT_THROW(simulate_rolling_tyre(RollingPlate(plate, grid, grid.dx() / (2 * speed)), tread(grid), road, settings),
+  EXPECT_THROW(simulate_rolling_tyre(RollingModes(plate, grid, grid.dx() / (2 * speed)), tread(grid), road, settings),
                std::invalid_argument);
 }
 
@@ -192,7 +224,7 @@ TEST(RollingTyre, SubStepsKeepTheSteadyStateOnASmoothRoad) {
   const TyreGrid grid = small_grid();
   const double speed = 22.2, load = 3200.0;
   for (int p : {2, 5}) {
-    const RollingPlate rolling(plate, grid, grid.dx() / (p * speed), p);
+    const RollingModes rolling(plate, grid, grid.dx() / (p * speed), p);
     const TyreContactTrace t = simulate_rolling_tyre(rolling, tread(grid), Flat(),
                                                      {speed, 50 * grid.dx() / speed, load, HistoryKind::modal});
     EXPECT_LE((t.total_force.array() - load).abs().maxCoeff(), 1e-9 * load) << "p = " << p;
@@ -219,7 +251,7 @@ TEST(RollingTyre, SubStepsConverge) {
   const int reference = 64;
   std::vector<Eigen::VectorXd> totals;
   for (int p : {1, 2, 4, 8, reference}) {
-    const RollingPlate rolling(plate, grid, grid.dx() / (p * speed), p);
+    const RollingModes rolling(plate, grid, grid.dx() / (p * speed), p);
     totals.push_back(simulate_rolling_tyre(rolling, tread(grid), Wave(), {speed, 40 * grid.dx() / speed, load,
                                                                           HistoryKind::modal}).total_force);
   }
@@ -249,7 +281,7 @@ TEST(RollingTyre, RoadSamplingRemovesWhatTheCellsCannotResolve) {
   const TyreGrid grid = small_grid();
   const double speed = 22.2, amplitude = 1e-5;
   const int p = 2;
-  const RollingPlate rolling(plate, grid, grid.dx() / (p * speed), p);
+  const RollingModes rolling(plate, grid, grid.dx() / (p * speed), p);
   class Wave : public RoadSurface {
    public:
     Wave(double wavelength, double amplitude) : wavelength_(wavelength), amplitude_(amplitude) {}
@@ -288,7 +320,7 @@ TEST(RollingTyre, DampingMakesThePressureLeanForwardAndCostsRollingResistance) {
   const double load = 3200.0;
   const auto steady = [&](double loss_factor) {
     const KroppPlate plate(small_plate(loss_factor));
-    return solve_steady_rolling(RollingPlate(plate, grid, grid.dx() / speed), tread(grid), load);
+    return solve_steady_rolling(RollingModes(plate, grid, grid.dx() / speed), tread(grid), load);
   };
   const SteadyRolling with_loss = steady(0.15);
   const SteadyRolling without = steady(0.0);

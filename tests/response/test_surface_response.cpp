@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "contact/rolling_tyre.hpp"
+#include "greens/kropp_plate.hpp"
 #include "greens/tread_compliance.hpp"
 #include "response/surface_response.hpp"
 #include "road/road_surface.hpp"
@@ -56,7 +57,7 @@ TEST(SurfaceResponse, MatchesTheContactSolutionAtTheWindow) {
   // circumferential_modes = Nθ/2: the Nyquist order is included
   const KroppPlate plate(test_plate(64));
   const double speed = 20.0;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
   const TyreContactTrace t = simulate_rolling_tyre(rolling, local, Texture(), {speed, 150 * grid.dx() / speed, 3000.0, HistoryKind::modal});
   ASSERT_LT(t.contact_area.minCoeff(), t.contact_area.maxCoeff());  // contact changes
@@ -98,7 +99,7 @@ TEST(SurfaceResponse, SteadyRollingOnASmoothRoadIsStill) {
   const TyreGrid grid = test_grid(512, 48);
   const KroppPlate plate(test_plate(256));
   const double speed = 20.0;
-  const RollingPlate rolling(plate, grid, grid.dx() / speed);
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
   const SteadyRolling steady = solve_steady_rolling(rolling, local, 3000.0);
   SurfaceResponse response(rolling, steady.force, grid.lateral);
@@ -141,7 +142,7 @@ RateCheck rate_check(int around) {
   const KroppPlate plate(test_plate(96));
   const double speed = 20.0;
   const double dt = grid.dx() / speed;
-  const RollingPlate rolling(plate, grid, dt);
+  const RollingModes rolling(plate, grid, dt);
   const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
   const double duration = 0.04;  // s: 0.8 m of road, four waves
   const TyreContactTrace t = simulate_rolling_tyre(rolling, local, LongWave(), {speed, duration, 3000.0, HistoryKind::modal});
@@ -195,12 +196,12 @@ TEST(SurfaceResponse, OutOfRoundnessRadiatesAtTheRotationHarmonic) {
   const KroppPlate plate(test_plate(128));
   const double speed = 20.0;
   const double dt = grid.dx() / speed;
-  const RollingPlate rolling(plate, grid, dt);
+  const RollingModes rolling(plate, grid, dt);
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(grid.points());
   SurfaceResponse response(rolling, none, grid.lateral);
   const int order = 7;
   const double amplitude = 2e-4;
-  response.add_out_of_roundness(order, 1, amplitude, 0.4);
+  response.add_out_of_roundness(order, 0, amplitude, 0.4);  // the first lateral shape, sin(πy/b)
   const double omega = speed / grid.radius;  // Ω (rad/s)
   const int steps = grid.circumferential;    // one revolution
   Eigen::MatrixXd u(grid.lateral, grid.circumferential), v(grid.lateral, grid.circumferential);

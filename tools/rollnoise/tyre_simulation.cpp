@@ -19,6 +19,7 @@
 #include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
 #include "core/progress.hpp"
+#include "greens/kropp_plate.hpp"
 #include "greens/centre_line_response.hpp"
 #include "greens/plate_factory.hpp"
 #include "greens/tread_compliance.hpp"
@@ -80,16 +81,16 @@ void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, co
 // When `tread_velocity` is given, it receives the belt's velocity sampled onto the radiation
 // mesh's tread points by `sampling` (belt_sampling.hpp), one row per step.
 // When `belt_psd` is given, every step's belt velocity (index j + Ny·g) is pushed into it.
-std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingPlate& plate,
+std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingModes& modes,
                                  double speed, double load, const Eigen::SparseMatrix<double>* sampling,
                                  Eigen::MatrixXd* tread_velocity, PointAveragedPsd* belt_psd) {
-  const TyreGrid& grid = plate.grid();
+  const TyreGrid& grid = modes.grid();
   Hdf5Writer h5(path);
   h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
   h5.attribute("/", "speed_m_per_s", speed);
   h5.attribute("/", "static_load_N", load);
-  h5.attribute("/", "time_step_s", plate.time_step());
-  h5.attribute("/", "substeps_per_cell", plate.substeps());
+  h5.attribute("/", "time_step_s", modes.time_step());
+  h5.attribute("/", "substeps_per_cell", modes.substeps());
   h5.attribute("/", "radius_m", grid.radius);
   h5.attribute("/", "belt_width_m", grid.width);
   h5.write("/time", t.time, "s", "time of each sample; t = 0 is the start of the run in steady rolling");
@@ -120,7 +121,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
   auto velocity = h5.slices("/surface/velocity", samples, static_cast<std::size_t>(across),
                             static_cast<std::size_t>(around), "m/s",
                             "radial velocity of the belt surface at each fixed position, du/dt there (what radiates; not the velocity of the material passing it) [sample][y][position around]");
-  SurfaceResponse response(plate, t.steady_force, across);
+  SurfaceResponse response(modes, t.steady_force, across);
   std::vector<double> angle(static_cast<std::size_t>(around)), lateral(static_cast<std::size_t>(across));
   for (int g = 0; g < around; ++g) angle[static_cast<std::size_t>(g)] = g * grid.dx();
   for (int j = 0; j < across; ++j) lateral[static_cast<std::size_t>(j)] = response.lateral_position(j);
@@ -160,7 +161,7 @@ std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t
     slice = v.cast<float>();
     velocity->append(slice.data());
     // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
-    const auto substeps = static_cast<std::size_t>(plate.substeps());
+    const auto substeps = static_cast<std::size_t>(modes.substeps());
     if (n % substeps == 0 && n / substeps < static_cast<std::size_t>(around)) {
       const int g = ((around / 2 - static_cast<int>(n / substeps)) % around + around) % around;
       revolution.push_back(u(across / 2, g));
@@ -266,9 +267,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   // Sub-steps per cell so that the contact steps carry the band_top band (rolling_settings.hpp).
   const int substeps = substeps_for_band(settings.band_top, grid.dx(), settings.speed);
   const double dt = grid.dx() / (substeps * settings.speed);
-  std::unique_ptr<RollingPlate> rolling_plate;
+  std::unique_ptr<RollingModes> rolling_modes;
   try {
-    rolling_plate = std::make_unique<RollingPlate>(plate, grid, dt, substeps);
+    rolling_modes = std::make_unique<RollingModes>(plate, grid, dt, substeps);
   } catch (const std::invalid_argument& error) {
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
@@ -294,7 +295,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
         Eigen::VectorXd::Constant(grid.points(), model.tread.spring_stiffness * grid.dx() * grid.dy()),
         model.tread.spring_exponent});
   }
-  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_plate, local, *road, run, &progress, springs.get());
+  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_modes, local, *road, run, &progress, springs.get());
   const double contact_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count();
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
@@ -345,7 +346,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
         belt_budget_weights(grid.circumferential, grid.lateral, grid.circumference()));
   }
   const std::vector<double> revolution =
-      write_fields(staged.staging() / "contact.h5", trace, *rolling_plate, settings.speed, settings.static_load,
+      write_fields(staged.staging() / "contact.h5", trace, *rolling_modes, settings.speed, settings.static_load,
                    &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
   if (plots) {
     plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));

@@ -1,26 +1,23 @@
-#include "contact/rolling_plate.hpp"
+#include "contact/rolling_modes.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/LU>
-
 namespace rollnoise {
 
-RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double time_step, int substeps)
-    : plate_(plate),
+RollingModes::RollingModes(const ModalTyre& tyre, const TyreGrid& grid, double time_step, int substeps)
+    : tyre_(tyre),
       grid_(grid),
       time_step_(time_step),
       substeps_(substeps),
-      orders_(plate.parameters().circumferential_modes),
-      lateral_modes_(plate.parameters().lateral_modes),
-      modal_mass_(plate.modal_mass()) {
+      orders_(tyre.orders()),
+      lateral_modes_(tyre.lateral_modes()) {
   grid_.validate();
-  if (substeps_ < 1) throw std::invalid_argument("rolling plate: substeps must be >= 1");
-  if (std::abs(plate.circumference() - grid_.circumference()) > 1e-12 * grid_.circumference())
-    throw std::invalid_argument("the plate and the grid have different radii");
+  if (substeps_ < 1) throw std::invalid_argument("rolling tyre: substeps must be >= 1");
+  if (std::abs(tyre.circumference() - grid_.circumference()) > 1e-12 * grid_.circumference())
+    throw std::invalid_argument("the tyre model and the grid have different radii");
   if (orders_ > grid_.circumferential / 2) {
     throw std::invalid_argument("circumferential_modes = " + std::to_string(orders_) +
                                 " exceeds what points_circumferential = " +
@@ -29,41 +26,33 @@ RollingPlate::RollingPlate(const KroppPlate& plate, const TyreGrid& grid, double
   }
   lateral_shapes_.resize(grid_.lateral, lateral_modes_);
   for (int j = 0; j < grid_.lateral; ++j)
-    for (int n = 1; n <= lateral_modes_; ++n)
-      lateral_shapes_(j, n - 1) = std::sin(plate.wavenumber_y(n) * grid_.y(j));
-  const double zeta = plate.damping_ratio();
-  for (int n = 1; n <= lateral_modes_; ++n) {
-    for (int m = 0; m <= orders_; ++m) {
-      const double w = plate.natural_frequency(m, n);
-      // Unit modal mass: the 1/M of the mode normalisation is applied in the projections.
-      oscillators_.push_back(SdofOscillator{1.0, 2.0 * zeta * w, w * w});
-      recursions_.push_back(make_travelling_recursion(oscillators_.back(), time_step_, passing_rate(m)));
-    }
-  }
+    for (int l = 0; l < lateral_modes_; ++l) lateral_shapes_(j, l) = tyre.lateral_shape(l, grid_.y(j));
+  modes_.reserve(static_cast<std::size_t>((orders_ + 1) * lateral_modes_));
+  for (int l = 0; l < lateral_modes_; ++l)
+    for (int m = 0; m <= orders_; ++m) modes_.push_back(tyre.mode_response(m, l, grid_.dx(), grid_.dy()));
 }
 
-double RollingPlate::passing_rate(int m) const {
+double RollingModes::passing_rate(int m) const {
   // k_m·v with v = dx/(p·Δt): order m turns by 2πm/(p·Nθ) per step.
   return 2.0 * std::numbers::pi * m / (grid_.circumferential * substeps_ * time_step_);
 }
 
-void RollingPlate::add_modal_sum(const std::vector<std::complex<double>>& coefficients,
-                                 Eigen::MatrixXd& out) const {
+void RollingModes::add_modal_sum(const std::vector<std::complex<double>>& coefficients, Eigen::MatrixXd& out) const {
   const int nw = grid_.window;
   const int ny = grid_.lateral;
   const int big_n = grid_.circumferential;
-  // a_n(Δ) for Δ = i_p − i_q from −(Nw−1) to Nw−1.
+  // a_l(Δ) for Δ = i_p − i_q from −(Nw−1) to Nw−1.
   Eigen::MatrixXd a(2 * nw - 1, lateral_modes_);
   for (int d = -(nw - 1); d <= nw - 1; ++d) {
-    for (int n = 1; n <= lateral_modes_; ++n) {
+    for (int l = 0; l < lateral_modes_; ++l) {
       double sum = 0.0;
       for (int m = 0; m <= orders_; ++m) {
         // e^{2πi m Δ/Nθ}, with the angle reduced exactly in integers.
         const long turns = (static_cast<long>(m) * d) % big_n;
         const std::complex<double> e = std::polar(1.0, 2.0 * std::numbers::pi * static_cast<double>(turns) / big_n);
-        sum += weight(m) * (e * coefficients[static_cast<std::size_t>(mode_index(m, n))]).real();
+        sum += weight(m) * (e * coefficients[static_cast<std::size_t>(mode_index(m, l))]).real();
       }
-      a(d + nw - 1, n - 1) = sum / modal_mass_;
+      a(d + nw - 1, l) = sum;
     }
   }
   // Block (j_p, j_q) of lateral shapes for each Δ.
@@ -78,7 +67,7 @@ void RollingPlate::add_modal_sum(const std::vector<std::complex<double>>& coeffi
   }
 }
 
-DiscreteKernel RollingPlate::sheared_kernel(std::size_t lags) const {
+DiscreteKernel RollingModes::sheared_kernel(std::size_t lags) const {
   DiscreteKernel kernel;
   kernel.time_step = time_step_;
   kernel.discretisation = Discretisation::step;
@@ -87,28 +76,28 @@ DiscreteKernel RollingPlate::sheared_kernel(std::size_t lags) const {
   return kernel;
 }
 
-Eigen::MatrixXd RollingPlate::sheared_lag(std::size_t k) const {
-  // H̃_mn[k] = ∫_{kΔt}^{(k+1)Δt} e^{iω_m τ} h_mn(τ) dτ in closed form.
+Eigen::MatrixXd RollingModes::sheared_lag(std::size_t k) const {
+  // G̃_ml[k] = ∫_{kΔt}^{(k+1)Δt} e^{iω_m τ} h_ml(τ) dτ in closed form.
   const double dt = time_step_;
   const double t0 = static_cast<double>(k) * dt;
-  std::vector<std::complex<double>> coefficients(oscillators_.size());
-  for (int n = 1; n <= lateral_modes_; ++n)
+  std::vector<std::complex<double>> coefficients(modes_.size());
+  for (int l = 0; l < lateral_modes_; ++l)
     for (int m = 0; m <= orders_; ++m) {
-      const auto r = static_cast<std::size_t>(mode_index(m, n));
-      coefficients[r] = oscillators_[r].phase_integral(passing_rate(m), t0, t0 + dt);
+      const auto r = static_cast<std::size_t>(mode_index(m, l));
+      coefficients[r] = modes_[r].phase_integral(passing_rate(m), t0, t0 + dt);
     }
   Eigen::MatrixXd lag = Eigen::MatrixXd::Zero(grid_.points(), grid_.points());
   add_modal_sum(coefficients, lag);
   return lag;
 }
 
-Eigen::MatrixXd RollingPlate::rolling_compliance() const {
-  // Σ_k H̃[k] = ∫_0^∞ e^{iωτ} h dτ = α(−ω), the receptance with the e^{−iωt} convention.
-  std::vector<std::complex<double>> coefficients(oscillators_.size());
-  for (int n = 1; n <= lateral_modes_; ++n)
+Eigen::MatrixXd RollingModes::rolling_compliance() const {
+  // Σ_k G̃[k] = ∫_0^∞ e^{iωτ} h dτ = α(−ω), the receptance with the e^{−iωt} convention.
+  std::vector<std::complex<double>> coefficients(modes_.size());
+  for (int l = 0; l < lateral_modes_; ++l)
     for (int m = 0; m <= orders_; ++m) {
-      const auto r = static_cast<std::size_t>(mode_index(m, n));
-      coefficients[r] = oscillators_[r].receptance(-passing_rate(m));
+      const auto r = static_cast<std::size_t>(mode_index(m, l));
+      coefficients[r] = modes_[r].steady_total(passing_rate(m));
     }
   Eigen::MatrixXd total = Eigen::MatrixXd::Zero(grid_.points(), grid_.points());
   add_modal_sum(coefficients, total);
