@@ -12,14 +12,14 @@
 namespace rollnoise {
 namespace {
 
-constexpr std::array<std::string_view, 27> keys = {
+constexpr std::array<std::string_view, 29> keys = {
     "model", "radius", "width",
     "belt_thickness", "belt_density", "belt_youngs_modulus_x", "belt_youngs_modulus_y", "belt_youngs_modulus_z",
     "belt_shear_modulus_xy", "belt_shear_modulus_xz", "belt_shear_modulus_yz", "belt_poisson_xy",
     "belt_poisson_xz", "belt_poisson_yz", "belt_loss_factor",
     "tread_thickness", "tread_density", "tread_youngs_modulus", "tread_poisson_ratio", "tread_loss_factor",
     "tension_x", "tension_y", "foundation_stiffness", "foundation_loss_factor",
-    "circumferential_modes", "lateral_modes", "side_condition"};
+    "circumferential_modes", "lateral_modes", "side_condition", "crown_radius", "tread_width"};
 
 // η ≥ 0 below what the causal modulus can carry; required unless `optional`, then 0 when absent.
 double loss_factor(const ConfigTable& tyre, std::string_view key, bool optional = false) {
@@ -91,6 +91,11 @@ TwoLayerParameters read_two_layer_tyre(const ConfigTable& tyre) {
   if (!tyre.contains("lateral_modes")) tyre.fail("lateral_modes", "is required (an integer >= 1)");
   p.circumferential_modes = static_cast<int>(tyre.integer("circumferential_modes", 0, 0, 100000));
   p.lateral_modes = static_cast<int>(tyre.integer("lateral_modes", 1, 1, 10000));
+  // The contact geometry (as the plate file's keys): the crowned tread across the width and the
+  // width that meets the road. They shape the contact grid, not the layers' response.
+  p.crown_radius = tyre.non_negative("crown_radius", 0.0);
+  p.tread_width = tyre.positive("tread_width", p.width);
+  if (p.tread_width > p.width) tyre.fail("tread_width", "must not exceed the width (" + std::to_string(p.width) + " m)");
   p.side_condition = tyre.choice("side_condition", {"simply_supported", "sliding"}, "simply_supported") == "sliding"
                          ? SideCondition::sliding
                          : SideCondition::simply_supported;

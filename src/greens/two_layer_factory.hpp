@@ -12,6 +12,8 @@
 //   foundation_loss_factor (optional, default 0)
 //   circumferential_modes (M ≥ 0), lateral_modes (N ≥ 1),
 //   side_condition = "simply_supported" (default) | "sliding"
+//   crown_radius (m, optional, 0 = flat), tread_width (m, optional, default width): the contact
+//   geometry, as in the plate file
 // Moduli are storage moduli and loss factors are at 1 kHz (causal_modulus.hpp). Unknown keys
 // and non-physical values are an InputError naming the file, the key and what is allowed.
 #include "greens/two_layer_tyre.hpp"

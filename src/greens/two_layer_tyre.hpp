@@ -68,6 +68,10 @@ struct TwoLayerParameters {
   int circumferential_modes = 0;        // M: m = −M … M
   int lateral_modes = 0;                // N lateral orders
   SideCondition side_condition = SideCondition::simply_supported;
+  // The contact geometry (not part of the layer solution): the tread's crown radius across the
+  // width (0: flat) and the width that meets the road (0: the whole width), as the plate file's.
+  double crown_radius = 0.0;  // m
+  double tread_width = 0.0;   // m
 };
 
 class TwoLayerTyre;
