@@ -12,6 +12,7 @@
 #include <cstring>
 #include <exception>
 #include <stdexcept>
+#include <system_error>
 
 #include "core/error.hpp"
 
@@ -154,6 +155,39 @@ std::string run_in_child_process(const std::function<std::string()>& work, const
       break;
   }
   throw InputError(source, "", failed + " sent back a malformed result");
+}
+
+std::chrono::milliseconds time_to_read(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const auto megabytes = ec ? 0 : static_cast<std::int64_t>(size >> 20);
+  return std::chrono::milliseconds(2000 + 1000 * megabytes);
+}
+
+void ChildResultWriter::count(std::uint64_t n) { bytes_.append(reinterpret_cast<const char*>(&n), sizeof n); }
+
+void ChildResultWriter::doubles(const double* values, std::size_t n) {
+  bytes_.append(reinterpret_cast<const char*>(values), n * sizeof(double));
+}
+
+void ChildResultReader::take(void* out, std::size_t n) {
+  if (bytes_.size() - pos_ < n) throw std::runtime_error(what_ + ": short result from the reading process");
+  if (n > 0) std::memcpy(out, bytes_.data() + pos_, n);
+  pos_ += n;
+}
+
+std::uint64_t ChildResultReader::count() {
+  std::uint64_t n = 0;
+  take(&n, sizeof n);
+  return n;
+}
+
+void ChildResultReader::doubles(double* out, std::size_t n) {
+  // Checked before multiplying, so that a huge n cannot wrap around.
+  if ((bytes_.size() - pos_) / sizeof(double) < n) {
+    throw std::runtime_error(what_ + ": short result from the reading process");
+  }
+  take(out, n * sizeof(double));
 }
 
 }  // namespace rollnoise

@@ -153,4 +153,26 @@ std::optional<std::string> Hdf5Reader::string_attribute(const std::string& objec
   return buffer;
 }
 
+std::optional<double> Hdf5Reader::number_attribute(const std::string& object, const std::string& name) const {
+  const std::string where = object + " attribute " + name;
+  const auto fail = [&](const std::string& problem) -> InputError { return InputError(source_, where, problem); };
+  const htri_t present = H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT);
+  if (present < 0) throw fail("cannot be read (corrupted file?)");
+  if (present == 0) return std::nullopt;
+  const Handle attribute(H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid()) throw fail("cannot be opened (corrupted file?)");
+  const Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  if (!type.valid()) throw fail("cannot be read (corrupted file?)");
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) throw fail("must be a number (integer or floating point)");
+  const Handle space(H5Aget_space(attribute.get()), H5Sclose);
+  if (!space.valid()) throw fail("cannot be read (corrupted file?)");
+  if (H5Sget_simple_extent_npoints(space.get()) != 1) throw fail("must be a single number");
+  double value = 0.0;
+  if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) {
+    throw fail("cannot be read (corrupted file, or a number that does not convert to double)");
+  }
+  return value;
+}
+
 }  // namespace rollnoise

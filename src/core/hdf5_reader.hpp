@@ -44,6 +44,10 @@ class Hdf5Reader {
   // `object`; std::nullopt when the object has no attribute `name`. Other types are an
   // InputError.
   std::optional<std::string> string_attribute(const std::string& object, const std::string& name) const;
+  // A number attribute (one integer or floating-point value, scalar or an array of one),
+  // converted to double; std::nullopt when absent. Other types are an InputError. The value is
+  // not checked for finiteness.
+  std::optional<double> number_attribute(const std::string& object, const std::string& name) const;
 
  private:
   std::int64_t file_ = -1;

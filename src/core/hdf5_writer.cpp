@@ -66,6 +66,12 @@ Hdf5Writer::~Hdf5Writer() {
   if (file_ >= 0) H5Fclose(file_);
 }
 
+void Hdf5Writer::close() {
+  const hid_t file = file_;
+  file_ = -1;
+  if (file >= 0) check(H5Fclose(file), "closing the file");
+}
+
 void Hdf5Writer::group(const std::string& path) {
   if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0) return;
   const Handle links = link_creation_with_parents();
@@ -83,6 +89,19 @@ void Hdf5Writer::write(const std::string& path, const Eigen::VectorXd& data, con
                          "dataset " + path),
                  H5Dclose);
   check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + path);
+  describe(dataset.get(), units, description);
+}
+
+void Hdf5Writer::write_integers(const std::string& path, const std::vector<std::int64_t>& data,
+                                const std::string& units, const std::string& description) {
+  const hsize_t size = static_cast<hsize_t>(data.size());
+  Handle space(checked(H5Screate_simple(1, &size, nullptr), "space"), H5Sclose);
+  const Handle links = link_creation_with_parents();
+  Handle dataset(checked(H5Dcreate2(file_, path.c_str(), H5T_STD_I64LE, space.get(), links.get(), H5P_DEFAULT,
+                                    H5P_DEFAULT),
+                         "dataset " + path),
+                 H5Dclose);
+  check(H5Dwrite(dataset.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + path);
   describe(dataset.get(), units, description);
 }
 
@@ -114,6 +133,17 @@ void Hdf5Writer::attribute(const std::string& object, const std::string& name, c
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::vector<double>& values) {
   Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
   write_double_attribute(target.get(), name, values.data(), static_cast<hsize_t>(values.size()));
+}
+
+void Hdf5Writer::integer_attribute(const std::string& object, const std::string& name, std::int64_t value) {
+  Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
+  Handle space(checked(H5Screate(H5S_SCALAR), "space"), H5Sclose);
+  if (H5Aexists(target.get(), name.c_str()) > 0) H5Adelete(target.get(), name.c_str());
+  Handle attribute(checked(H5Acreate2(target.get(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT,
+                                      H5P_DEFAULT),
+                           "attribute " + name),
+                   H5Aclose);
+  check(H5Awrite(attribute.get(), H5T_NATIVE_INT64, &value), "attribute " + name);
 }
 
 std::unique_ptr<Hdf5Writer::SliceStream> Hdf5Writer::slices(const std::string& path, std::size_t count,

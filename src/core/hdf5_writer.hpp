@@ -21,11 +21,18 @@ class Hdf5Writer {
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
+  // Closes the file, throwing std::runtime_error if HDF5 cannot finish writing it (the
+  // destructor closes too, but cannot report that). No other call is allowed afterwards.
+  void close();
+
   // A group ("contact", "surface/fields"); parents are created as needed.
   void group(const std::string& path);
   // 1-D dataset of doubles.
   void write(const std::string& path, const Eigen::VectorXd& data, const std::string& units,
              const std::string& description);
+  // 1-D dataset of 64-bit integers (indices, orders).
+  void write_integers(const std::string& path, const std::vector<std::int64_t>& data, const std::string& units,
+                      const std::string& description);
   // 2-D dataset [rows][cols] of doubles from a matrix (any storage order).
   void write(const std::string& path, const Eigen::MatrixXd& data, const std::string& units,
              const std::string& description);
@@ -33,6 +40,8 @@ class Hdf5Writer {
   void attribute(const std::string& object, const std::string& name, double value);
   void attribute(const std::string& object, const std::string& name, const std::string& value);
   void attribute(const std::string& object, const std::string& name, const std::vector<double>& values);
+  // A 64-bit integer attribute (named apart from attribute(): an int argument would be ambiguous).
+  void integer_attribute(const std::string& object, const std::string& name, std::int64_t value);
 
   // A 3-D float dataset [count][rows][cols] written one [rows][cols] slice at a time, chunked
   // by slice, for fields too large to keep in memory.

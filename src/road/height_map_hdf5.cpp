@@ -1,10 +1,9 @@
 #include "road/height_map_hdf5.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "core/child_process.hpp"
 #include "core/csv.hpp"
@@ -90,34 +89,6 @@ HeightMapGrid read_in_this_process(const std::filesystem::path& path) {
   return out;
 }
 
-void put(std::string& out, std::uint64_t n) { out.append(reinterpret_cast<const char*>(&n), sizeof n); }
-void put(std::string& out, const std::vector<double>& v) {
-  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
-}
-std::uint64_t get_count(const std::string& in, std::size_t& pos) {
-  std::uint64_t n = 0;
-  if (in.size() - pos < sizeof n) throw std::runtime_error("height map: short result from the reading process");
-  std::memcpy(&n, in.data() + pos, sizeof n);
-  pos += sizeof n;
-  return n;
-}
-std::vector<double> get_values(const std::string& in, std::size_t& pos, std::uint64_t n) {
-  if ((in.size() - pos) / sizeof(double) < n) throw std::runtime_error("height map: short result from the reading process");
-  std::vector<double> v(static_cast<std::size_t>(n));
-  std::memcpy(v.data(), in.data() + pos, v.size() * sizeof(double));
-  pos += v.size() * sizeof(double);
-  return v;
-}
-
-// Time for the reading process: 2 s plus 1 s per MB, ample for a sound file (a corrupted one
-// can send the library into an endless loop).
-std::chrono::milliseconds read_time_allowed(const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  const auto megabytes = ec ? 0 : static_cast<std::int64_t>(size >> 20);
-  return std::chrono::milliseconds(2000 + 1000 * megabytes);
-}
-
 }  // namespace
 
 HeightMapGrid read_height_map_hdf5(const std::filesystem::path& path) {
@@ -126,29 +97,32 @@ HeightMapGrid read_height_map_hdf5(const std::filesystem::path& path) {
   const std::string bytes = run_in_child_process(
       [&] {
         const HeightMapGrid grid = read_in_this_process(path);
-        std::string out;
-        put(out, grid.x.size());
-        put(out, grid.y.size());
-        put(out, grid.dropouts);
-        put(out, grid.x);
-        put(out, grid.y);
-        put(out, grid.z);
-        return out;
+        ChildResultWriter out;
+        out.count(grid.x.size());
+        out.count(grid.y.size());
+        out.count(grid.dropouts);
+        out.doubles(grid.x.data(), grid.x.size());
+        out.doubles(grid.y.data(), grid.y.size());
+        out.doubles(grid.z.data(), grid.z.size());
+        return std::move(out.bytes());
       },
       source, "the HDF5 library", 3 * sizeof(std::uint64_t) + 3 * max_height_map_values * sizeof(double),
-      read_time_allowed(path));
+      time_to_read(path));
   HeightMapGrid grid;
   grid.source = source;
-  std::size_t pos = 0;
-  const std::uint64_t nx = get_count(bytes, pos);
-  const std::uint64_t ny = get_count(bytes, pos);
-  grid.dropouts = static_cast<std::size_t>(get_count(bytes, pos));
+  ChildResultReader in(bytes, "height map");
+  const std::uint64_t nx = in.count();
+  const std::uint64_t ny = in.count();
+  grid.dropouts = static_cast<std::size_t>(in.count());
   if (nx > max_height_map_values || ny > max_height_map_values || nx * ny > max_height_map_values) {
     throw std::runtime_error("height map: malformed result from the reading process");
   }
-  grid.x = get_values(bytes, pos, nx);
-  grid.y = get_values(bytes, pos, ny);
-  grid.z = get_values(bytes, pos, nx * ny);
+  grid.x.resize(static_cast<std::size_t>(nx));
+  grid.y.resize(static_cast<std::size_t>(ny));
+  grid.z.resize(static_cast<std::size_t>(nx * ny));
+  in.doubles(grid.x.data(), grid.x.size());
+  in.doubles(grid.y.data(), grid.y.size());
+  in.doubles(grid.z.data(), grid.z.size());
   return grid;
 }
 
