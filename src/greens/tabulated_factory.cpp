@@ -1,0 +1,34 @@
+#include "greens/tabulated_factory.hpp"
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include "core/config_table.hpp"
+#include "greens/modal_table_hdf5.hpp"
+
+namespace rollnoise {
+
+ModalReceptanceTable read_tabulated_tyre(const ConfigTable& tyre) {
+  namespace fs = std::filesystem;
+  // Unknown keys first: a misspelt key is then reported as such, not as a missing one.
+  for (const std::string_view key : std::array<std::string_view, 2>{"model", "file"}) tyre.contains(key);
+  tyre.reject_unknown_keys();
+  tyre.choice("model", {"tabulated"});
+  if (!tyre.contains("file")) tyre.fail("file", "is required: the HDF5 file of the modal receptance table");
+  const std::string name = tyre.text("file");
+  if (name.empty()) tyre.fail("file", "must name an HDF5 file (the modal receptance table)");
+  // Relative to the file that names it, not to the current folder: a model file and its table
+  // move together.
+  const fs::path named(name);
+  const fs::path path = named.is_absolute() ? named : fs::path(tyre.source_of("file")).parent_path() / named;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    tyre.fail("file", "no such file: " + path.string() + " (a relative path is taken from the model file's folder)");
+  }
+  return read_modal_table(path);
+}
+
+}  // namespace rollnoise
