@@ -1,6 +1,7 @@
 #include "greens/modal_receptance_table.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <numbers>
@@ -129,15 +130,16 @@ ModalReceptanceTable tabulate_two_layer(const TwoLayerTyre& tyre, const Eigen::V
   const std::size_t count = static_cast<std::size_t>(table.lateral_orders) * static_cast<std::size_t>(orders + 1);
   table.modes.assign(count, Eigen::VectorXcd(frequency_hz.size()));
 
-  // Each thread takes every T-th frequency (cost rises with frequency, so interleaving keeps the
-  // threads even) and writes only its own columns.
+  // Each thread takes the next frequency not yet taken (costs differ between frequencies) and
+  // writes only that frequency's column: the values do not depend on who computed them.
   const std::size_t frequencies = static_cast<std::size_t>(frequency_hz.size());
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t workers = std::min<std::size_t>(threads == 0 ? hardware : threads, frequencies);
+  std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> failures(workers);
   const auto work = [&](std::size_t worker) {
     try {
-      for (std::size_t k = worker; k < frequencies; k += workers) {
+      for (std::size_t k = next++; k < frequencies; k = next++) {
         const Eigen::Index column = static_cast<Eigen::Index>(k);
         for (int n = table.first_lateral_order; n <= table.last_lateral_order(); ++n) {
           for (int m = 0; m <= orders; ++m) {
@@ -147,6 +149,7 @@ ModalReceptanceTable tabulate_two_layer(const TwoLayerTyre& tyre, const Eigen::V
       }
     } catch (...) {
       failures[worker] = std::current_exception();
+      next = frequencies;  // the others stop too
     }
   };
   {
