@@ -21,9 +21,10 @@ namespace {
 // (The sampled entries in the key catch most such changes anyway; this makes it certain.)
 constexpr int two_layer_revision = 1;
 
-// A new parameter must enter the digest below: this fails to compile until it is counted.
+// A new parameter must be weighed for the digest below: this fails to compile until it is
+// counted. (25 doubles; three ints and the padding after them.)
 static_assert(sizeof(OrthotropicConstants) == 9 * sizeof(double));
-static_assert(sizeof(TwoLayerParameters) == 23 * sizeof(double) + 4 * sizeof(int),
+static_assert(sizeof(TwoLayerParameters) == 25 * sizeof(double) + 4 * sizeof(int),
               "TwoLayerParameters changed: add the new member to the digest of two_layer_table_key");
 
 // FNV-1a, 64 bits, over a byte sequence that does not depend on the machine's byte order.
@@ -86,6 +87,8 @@ std::string key_of(const TwoLayerTyre& tyre, int orders, const Eigen::VectorXd& 
   d.integer(p.circumferential_modes);
   d.integer(p.lateral_modes);
   d.integer(p.side_condition == SideCondition::simply_supported ? 0 : 1);
+  // Not crown_radius and tread_width: they shape the contact grid, not the layers, and the
+  // table does not depend on them (a change of them reuses the table).
   d.integer(orders);
   d.integer(frequency_hz.size());
   for (Eigen::Index k = 0; k < frequency_hz.size(); ++k) d.real(frequency_hz(k));

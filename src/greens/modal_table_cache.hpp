@@ -6,9 +6,10 @@
 // sharing the folder never read half a file.
 //
 // The key of a two-layer table digests (FNV-1a, 64 bits) the layout version, a revision number
-// of the two-layer code, every parameter (doubles as their exact bits), the orders, the
-// frequencies (exact bits), and a few entries of the table itself computed afresh (H_zz at the
-// first, a middle and the last mode and frequency). Those entries catch most changes of the
+// of the two-layer code, every parameter of the layers and modes (doubles as their exact bits;
+// not the contact geometry crown_radius and tread_width, on which the table does not depend),
+// the orders, the frequencies (exact bits), and a few entries of the table itself computed
+// afresh (H_zz at the first, a middle and the last mode and frequency). Those entries catch most changes of the
 // model's code that were not marked by a new revision: a table is reused only if the code
 // reproduces it bit for bit at those samples.
 //

@@ -486,6 +486,11 @@ TEST(ModalTableCache, KeyIsStableAndChangesWithEveryParameter) {
     changes[i](p);
     EXPECT_NE(two_layer_table_key(p, 4, f), key) << "change " << i;
   }
+  // The contact geometry does not shape the table: the same key.
+  TwoLayerParameters contact = base;
+  contact.crown_radius = 0.5;
+  contact.tread_width = 0.15;
+  EXPECT_EQ(two_layer_table_key(contact, 4, f), key);
   EXPECT_NE(two_layer_table_key(base, 5, f), key);
   Eigen::VectorXd g = f;
   up(g(2));
