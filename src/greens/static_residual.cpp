@@ -1,0 +1,60 @@
+#include "greens/static_residual.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+namespace rollnoise {
+
+namespace {
+double sinc(double z) { return std::abs(z) < 1e-8 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
+}  // namespace
+
+Eigen::MatrixXd static_residual_compliance(const KeptModes& kept,
+                                           const std::function<double(double kx, double ky)>& static_compliance,
+                                           int window, double cell_length, std::span<const double> y,
+                                           double cell_width, double tail_factor) {
+  if (!(kept.circumference > 0.0 && kept.width > 0.0 && window >= 1 && cell_length > 0.0 && cell_width > 0.0 &&
+        !y.empty() && tail_factor >= 1.0))
+    throw std::invalid_argument("static residual: invalid geometry");
+  const double pi = std::numbers::pi;
+  const double length = kept.circumference;
+  const double b = kept.width;
+  // Enough orders that the cells' sinc factors have fallen to 1/(tail_factor·π/2)² or less.
+  const int m_big = std::max(kept.orders, static_cast<int>(std::ceil(tail_factor * length / (2.0 * cell_length))));
+  const int first = kept.first_lateral_order;
+  const int n_big = std::max(first + kept.lateral_orders - 1, static_cast<int>(std::ceil(tail_factor * b / cell_width)));
+  const auto ny = static_cast<Eigen::Index>(y.size());
+  const Eigen::Index points = window * ny;
+  Eigen::MatrixXd residual = Eigen::MatrixXd::Zero(points, points);
+  std::vector<double> a(static_cast<std::size_t>(window));  // a_n(Δi), Δi = 0 … Nw − 1
+  Eigen::VectorXd shape(ny);
+  for (int n = first; n <= n_big; ++n) {
+    const double kn = n * pi / b;
+    const double cn = sinc(0.5 * kn * cell_width);
+    const double norm = length * (kept.lateral_shape == LateralShape::cosine && n == 0 ? b : 0.5 * b);
+    const bool lateral_kept = n <= first + kept.lateral_orders - 1;
+    std::fill(a.begin(), a.end(), 0.0);
+    for (int m = lateral_kept ? kept.orders + 1 : 0; m <= m_big; ++m) {
+      const double km = 2.0 * pi * m / length;
+      const double cm = sinc(0.5 * km * cell_length);
+      const double term = (m == 0 ? 1.0 : 2.0) * static_compliance(km, kn) * cm * cm * cn * cn / norm;
+      for (int d = 0; d < window; ++d) a[static_cast<std::size_t>(d)] += term * std::cos(km * d * cell_length);
+    }
+    for (Eigen::Index j = 0; j < ny; ++j)
+      shape(j) = kept.lateral_shape == LateralShape::sine ? std::sin(kn * y[static_cast<std::size_t>(j)])
+                                                          : std::cos(kn * y[static_cast<std::size_t>(j)]);
+    for (Eigen::Index jp = 0; jp < ny; ++jp)
+      for (Eigen::Index jq = 0; jq < ny; ++jq) {
+        const double s = shape(jp) * shape(jq);
+        if (s == 0.0) continue;
+        for (int ip = 0; ip < window; ++ip)
+          for (int iq = 0; iq < window; ++iq)
+            residual(ip + window * jp, iq + window * jq) += s * a[static_cast<std::size_t>(std::abs(ip - iq))];
+      }
+  }
+  return residual;
+}
+
+}  // namespace rollnoise
