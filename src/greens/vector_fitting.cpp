@@ -30,7 +30,7 @@ struct Samples {
   std::span<const cd> f;
   std::vector<double> weight;        // w_k of the least squares
   std::vector<double> error_scale;   // 1/|α_k| (1/RMS|α| where α_k = 0): the error measure
-  bool has_static = false;           // ω_0 = 0: its imaginary row is identically zero, left out
+  bool has_static = false;           // ω_0 = 0: its imaginary row is left out (see put_column)
   int size() const { return static_cast<int>(omega.size()); }
   // Real equations: the real and imaginary parts of each sample.
   int rows() const { return 2 * size() - (has_static ? 1 : 0); }
@@ -58,7 +58,8 @@ Eigen::MatrixXcd basis(const Samples& x, const PoleSet& poles) {
 }
 
 // Writes the real and imaginary parts of the complex column `values` (one per sample) into
-// column `col` of the real system, skipping the static sample's identically zero imaginary part.
+// column `col` of the real system. The static sample's imaginary part is left out: the basis is
+// real at s = 0, and a real h has a real static value.
 template <class Values>
 void put_column(const Samples& x, Eigen::MatrixXd& m, Eigen::Index col, Values&& values) {
   Eigen::Index row = 0;
@@ -110,7 +111,8 @@ LinearSystem relocation_system(const Samples& x, const Eigen::MatrixXcd& phi, bo
   const int rows = x.rows();
   const auto w = [&](int k) { return x.weight[static_cast<std::size_t>(k)]; };
   const auto f = [&](int k) { return x.f[static_cast<std::size_t>(k)]; };
-  LinearSystem sys{Eigen::MatrixXd::Zero(rows + (relaxed ? 1 : 0), cols), Eigen::VectorXd::Zero(rows + (relaxed ? 1 : 0))};
+  const int equations = rows + (relaxed ? 1 : 0);
+  LinearSystem sys{Eigen::MatrixXd::Zero(equations, cols), Eigen::VectorXd::Zero(equations)};
   for (int j = 0; j < n; ++j) {
     put_column(x, sys.m, j, [&](int k) { return w(k) * phi(k, j); });
     put_column(x, sys.m, n + nd + j, [&](int k) { return -w(k) * f(k) * phi(k, j); });
@@ -250,22 +252,26 @@ OrderFit identify_residues(const Samples& x, const PoleSet& poles, const VectorF
   return order;
 }
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("vector fitting: " + what);
+[[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("vector fitting: " + what); }
+
+void require(bool ok, const char* what) {
+  if (!ok) fail(what);
 }
 
 Samples prepare(std::span<const double> omega, std::span<const cd> response, const VectorFittingOptions& options) {
-  require(omega.size() == response.size(), "omega and response differ in size (" + std::to_string(omega.size()) +
-                                               " and " + std::to_string(response.size()) + ")");
-  require(omega.size() >= 3, "need at least 3 samples (got " + std::to_string(omega.size()) + ")");
+  // (The messages are built only on failure: this runs once per fit, of which there are many.)
+  if (omega.size() != response.size())
+    fail("omega and response differ in size (" + std::to_string(omega.size()) + " and " +
+         std::to_string(response.size()) + ")");
+  if (omega.size() < 3) fail("need at least 3 samples (got " + std::to_string(omega.size()) + ")");
   for (std::size_t k = 0; k < omega.size(); ++k) {
-    require(std::isfinite(omega[k]), "omega[" + std::to_string(k) + "] is not finite");
-    require(omega[k] >= 0.0, "omega[" + std::to_string(k) + "] = " + std::to_string(omega[k]) + " is negative");
-    require(k == 0 || omega[k] > omega[k - 1], "omega must be strictly increasing (omega[" + std::to_string(k) +
-                                                   "] = " + std::to_string(omega[k]) + " follows " +
-                                                   std::to_string(omega[k - 1]) + ")");
-    require(std::isfinite(response[k].real()) && std::isfinite(response[k].imag()),
-            "response[" + std::to_string(k) + "] is not finite");
+    if (!std::isfinite(omega[k])) fail("omega[" + std::to_string(k) + "] is not finite");
+    if (omega[k] < 0.0) fail("omega[" + std::to_string(k) + "] = " + std::to_string(omega[k]) + " is negative");
+    if (k > 0 && !(omega[k] > omega[k - 1]))
+      fail("omega must be strictly increasing (omega[" + std::to_string(k) + "] = " + std::to_string(omega[k]) +
+           " follows " + std::to_string(omega[k - 1]) + ")");
+    if (!std::isfinite(response[k].real()) || !std::isfinite(response[k].imag()))
+      fail("response[" + std::to_string(k) + "] is not finite");
   }
   require(options.starting_pole_pairs >= 0 && options.real_poles >= 0,
           "starting_pole_pairs and real_poles must be >= 0");
@@ -285,8 +291,9 @@ Samples prepare(std::span<const double> omega, std::span<const cd> response, con
   for (std::size_t k = 0; k < omega.size(); ++k) {
     const double magnitude = std::abs(response[k]);
     if (options.weighting == FitWeighting::relative) {
-      require(magnitude > 0.0, "relative weighting needs a nonzero response (response[" + std::to_string(k) +
-                                   "] = 0); use FitWeighting::uniform");
+      if (!(magnitude > 0.0))
+        fail("relative weighting needs a nonzero response (response[" + std::to_string(k) +
+             "] = 0); use FitWeighting::uniform");
       x.weight[k] = 1.0 / magnitude;
     } else {
       x.weight[k] = 1.0;
@@ -300,12 +307,13 @@ PoleSet split(std::span<const cd> poles) {
   PoleSet set;
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const cd p = poles[i];
-    require(std::isfinite(p.real()) && std::isfinite(p.imag()), "initial pole " + std::to_string(i) + " is not finite");
+    if (!(std::isfinite(p.real()) && std::isfinite(p.imag()) && p.real() < 0.0))
+      fail("initial pole " + std::to_string(i) + " is not finite and stable (Re p < 0)");
     if (p.imag() == 0.0) {
       set.real.push_back(p.real());
     } else {
-      require(p.imag() > 0.0 && i + 1 < poles.size() && poles[i + 1] == std::conj(p),
-              "initial pole " + std::to_string(i) + ": complex poles must come as p, conj(p) with Im p > 0");
+      if (!(p.imag() > 0.0 && i + 1 < poles.size() && poles[i + 1] == std::conj(p)))
+        fail("initial pole " + std::to_string(i) + ": complex poles must come as p, conj(p) with Im p > 0");
       set.upper.push_back(p);
       ++i;
     }
@@ -317,9 +325,9 @@ PoleSet split(std::span<const cd> poles) {
 // The number of unknowns of the relocation must not exceed its equations.
 void require_enough_samples(const Samples& x, int basis_size, bool fit_direct) {
   const int unknowns = 2 * basis_size + (fit_direct ? 1 : 0) + 1;
-  require(unknowns <= x.rows() + 1, std::to_string(basis_size) + " poles need at least " +
-                                        std::to_string(unknowns - 1) + " real equations; the " +
-                                        std::to_string(x.size()) + " samples give " + std::to_string(x.rows()));
+  if (unknowns > x.rows() + 1)
+    fail(std::to_string(basis_size) + " poles need at least " + std::to_string(unknowns - 1) +
+         " real equations; the " + std::to_string(x.size()) + " samples give " + std::to_string(x.rows()));
 }
 
 // Up to options.iterations relocations from `poles`, each followed by the residues; the best

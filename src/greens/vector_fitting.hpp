@@ -70,7 +70,8 @@ std::vector<std::complex<double>> starting_poles(double omega_low, double omega_
 // adjacent as p, conj(p)), then the residues. The result of the iteration with the smallest
 // RMS error is returned; `converged` reports the targets of `options`.
 VectorFittingResult vector_fit(std::span<const double> omega, std::span<const std::complex<double>> response,
-                               std::span<const std::complex<double>> initial_poles, const VectorFittingOptions& options);
+                               std::span<const std::complex<double>> initial_poles,
+                               const VectorFittingOptions& options);
 
 // The driver: vector_fit from starting_poles(options.starting_pole_pairs, options.real_poles)
 // over the sampled band (the lowest nonzero ω to the highest); while the targets are not met, the
