@@ -40,9 +40,9 @@ enum class StartingPoleSpacing { logarithmic, linear };
 
 struct VectorFittingOptions {
   int starting_pole_pairs = 2;   // complex pairs of the first order tried
-  int real_poles = 0;            // real starting poles, kept at every order (≥ 0)
-  int maximum_pole_pairs = 8;    // the order is raised one pair at a time up to this
-  int iterations = 6;            // pole relocations per order (≥ 1)
+  int real_poles = 0;            // real starting poles (≥ 0; relocation may pair real poles or split pairs)
+  int maximum_pole_pairs = 8;    // the order is raised up to 2·maximum_pole_pairs + real_poles poles
+  int iterations = 6;            // pole relocations per order at most (≥ 1)
   double target_rms_error = 1e-3;  // relative RMS error at which the driver stops
   double target_max_error = std::numeric_limits<double>::infinity();  // and the largest relative error
   FitWeighting weighting = FitWeighting::relative;
