@@ -1,13 +1,17 @@
 #include "contact/rolling_tyre.hpp"
 
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
+#include <Eigen/Cholesky>
+
 #include "contact/direct_history_engine.hpp"
 #include "contact/lcp_solver.hpp"
 #include "contact/nonlinear_tread_contact.hpp"
+#include "contact/pmatrix_lcp.hpp"
 #include "contact/modal_history_engine.hpp"
 #include "contact/static_contact.hpp"
 #include "core/error.hpp"
@@ -32,6 +36,39 @@ double power_per_metre(const TyreGrid& grid, const Eigen::VectorXd& force_now, c
       sum += 0.5 * (force_now(p) + force_before(p + 1)) * (u_now(p) - u_before(p + 1));
     }
   return sum / grid.dx();
+}
+
+// With the skew part K of G0 taken at the previous step's force, the points in contact obey
+// S·F(n) = −q(n) − K·F(n−1) (S the symmetric part), so a perturbation of the forces is
+// multiplied each step by −S_AA⁻¹K_AA on the active set A. Its spectral radius, estimated on
+// the steady active set by power iteration (the geometric mean of the growth over 60 steps
+// after 20 to settle), says whether the lag is safe: well below 1, errors die out as fast as the
+// step discretisation's own; near or above 1 they persist or grow.
+double lagged_skew_growth(const Eigen::MatrixXd& symmetric, const Eigen::MatrixXd& skew, const Eigen::VectorXd& force) {
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index p = 0; p < force.size(); ++p)
+    if (force(p) > 0.0) active.push_back(p);
+  if (active.empty()) return 0.0;
+  const auto a = static_cast<Eigen::Index>(active.size());
+  Eigen::MatrixXd s(a, a), k(a, a);
+  for (Eigen::Index i = 0; i < a; ++i)
+    for (Eigen::Index j = 0; j < a; ++j) {
+      s(i, j) = symmetric(active[static_cast<std::size_t>(i)], active[static_cast<std::size_t>(j)]);
+      k(i, j) = skew(active[static_cast<std::size_t>(i)], active[static_cast<std::size_t>(j)]);
+    }
+  const Eigen::LLT<Eigen::MatrixXd> factor(s);
+  if (factor.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(a, 1.0, 2.0);  // deterministic, not special
+  x.normalize();
+  double log_growth = 0.0;
+  for (int iteration = 0; iteration < 80; ++iteration) {
+    x = factor.solve(k * x);
+    const double norm = x.norm();
+    if (!(norm > 0.0)) return 0.0;
+    if (iteration >= 20) log_growth += std::log(norm);
+    x /= norm;
+  }
+  return std::exp(log_growth / 60.0);
 }
 
 // The taps of RoadSampling along x: offsets (m) and weights summing to 1.
@@ -157,7 +194,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const std::size_t samples = steps + 1;
   const RoadFilter road_filter = make_road_filter(settings.road_sampling, grid.dx());
 
-  if (modes.tyre().includes_tread() && (nonlinear || local_compliance.cwiseAbs().maxCoeff() > 0.0))
+  if (modes.tyre().includes_tread() && nonlinear)
     throw std::invalid_argument("rolling tyre: the " + modes.tyre().name() +
                                 " model includes its tread's local deformation; a separate tread is not allowed");
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
@@ -187,13 +224,27 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // K (a fraction of a per cent) acts through the previous step's force. A steady state is
   // unchanged by this (F(n) = F(n−1)), and the added error is first order in Δt, like the step
   // discretisation itself. Both history engines see the same split.
+  // A tyre whose own modes carry the tread (the two-layer model) responds within the step, while
+  // the material moves a cell: its G0 is skewed by several per cent or more (17 % for the
+  // passenger two-layer tyre at 80 km/h), and the skew part taken one step late can then feed a
+  // round-off perturbation that grows. When that lag would amplify (lagged_skew_growth) the step
+  // is solved with the whole G0 instead, by block principal pivoting for P-matrices
+  // (pmatrix_lcp.hpp; G0's symmetric part is positive definite, so G0 is a P-matrix),
+  // warm-started from the last step's active set.
   const Eigen::MatrixXd g0_symmetric = 0.5 * (g0 + g0.transpose());
   const Eigen::MatrixXd g0_skew = g0 - g0_symmetric;
-  // One of the two per-step solvers: the exact LCP for linear treads, KINSOL for nonlinear ones.
+  const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
+  const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
+  const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
+  // One of three per-step solvers: the exact symmetric LCP for linear treads, the P-matrix LCP
+  // for a strongly skewed G0, KINSOL for nonlinear treads.
   std::unique_ptr<LcpSolver> lcp;
   std::unique_ptr<NonlinearTreadContact> springs;
   if (nonlinear) springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
-  else lcp = std::make_unique<LcpSolver>(g0_symmetric);
+  else if (!whole_g0) lcp = std::make_unique<LcpSolver>(g0_symmetric);
+  PMatrixLcpResult whole;  // the last step's solution of the whole-G0 LCP
+  whole.basic.assign(static_cast<std::size_t>(points), 0);
+  for (Eigen::Index p = 0; p < points; ++p) whole.basic[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
 
   TyreContactTrace trace;
   trace.engine = engine->name();
@@ -212,7 +263,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   trace.contact_width.resize(rows);
   trace.input_power.resize(rows);
   trace.lcp_iterations.resize(samples);
-  trace.contact_matrix_skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
+  trace.contact_matrix_skewness = skewness;
+  trace.lagged_skew_growth = lag_growth;
+  trace.skew_part_lagged = !whole_g0;
 
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd u0(points), r(points), q(points), position(points), deformation(points);
@@ -245,14 +298,14 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
-    u0.noalias() += g0_skew * previous_force;
+    if (!whole_g0) u0.noalias() += g0_skew * previous_force;
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
     // The road moves one cell towards −x per cell of travel (every p steps), and the contacts
     // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0 && lcp) {
-      const std::vector<char>& last = lcp->active_flags();
+    if (n > 0 && !springs) {
+      const std::vector<char>& last = lcp ? lcp->active_flags() : whole.basic;
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -263,10 +316,21 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
                                 last[static_cast<std::size_t>(ahead)] != 0;
         shift += shifted_in != penetrates;
       }
-      if (shift < stay) lcp->relabel_active_set(shift_back);
+      if (shift < stay) {
+        if (lcp) {
+          lcp->relabel_active_set(shift_back);
+        } else {
+          std::vector<char> shifted(static_cast<std::size_t>(points), 0);
+          for (Eigen::Index p = 0; p < points; ++p)
+            if (const Eigen::Index to = shift_back[static_cast<std::size_t>(p)]; to >= 0)
+              shifted[static_cast<std::size_t>(to)] = last[static_cast<std::size_t>(p)];
+          whole.basic = std::move(shifted);
+        }
+      }
     }
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q);
-    deformation.noalias() = g0_symmetric * force;
+    if (whole_g0) whole = solve_pmatrix_lcp(g0, q, &whole.basic);
+    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp ? lcp->solve(q) : whole.z;
+    deformation.noalias() = (whole_g0 ? g0 : g0_symmetric) * force;
     deformation += u0;
     if (springs) deformation += springs->compression();
     position = h + deformation;
@@ -302,7 +366,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     force_ring[ring] = force;
     deformation_ring[ring] = deformation;
     previous_force = force;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->iterations();
+    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp ? lcp->iterations() : whole.iterations;
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

@@ -39,6 +39,14 @@ class ProgressReporter;
 // features pass the fixed points (README, "The band up to 5 kHz").
 enum class RoadSampling { point, cell_mean, lowpass };
 
+// When the skew part of G0, taken one step late, would multiply a perturbation of the forces by
+// more than this per step (TyreContactTrace::lagged_skew_growth), each step solves the LCP with
+// the whole, non-symmetric G0 instead (rolling_tyre.cpp). The estimate leaves out the coupling
+// through the later lags, so it errs low: the passenger two-layer tyre at 80 km/h estimates 0.72
+// and with the lag a round-off perturbation grew about ×2.8 per step; the passenger plate
+// estimates 0.017 and stays steady to round-off. Hence a margin of 10 × below 1.
+inline constexpr double whole_contact_matrix_above = 0.1;
+
 struct TyreRunSettings {
   double speed = 0.0;        // v, m/s (Δt = dx/(p·v))
   double duration = 0.0;     // s
@@ -61,8 +69,14 @@ struct TyreContactTrace {
   Eigen::VectorXd contact_width;   // m, extent across
   Eigen::VectorXd input_power;     // W, power of the contact forces into the tyre, Σ F·u̇
   std::vector<int> lcp_iterations;  // active-set changes per step
-  // Largest entry of the skew part of G0 over the largest of G0 (taken one step late).
+  // Largest entry of the skew part of G0 over the largest of G0.
   double contact_matrix_skewness = 0.0;
+  // Whether that skew part was taken one step late (at the previous step's force; G0 skewed by
+  // at most whole_contact_matrix_above) or the whole G0 solved at each step.
+  bool skew_part_lagged = true;
+  // The factor per step by which the lag would multiply a perturbation (estimated at the steady
+  // active set): the spectral radius of S_AA⁻¹K_AA.
+  double lagged_skew_growth = 0.0;
   double indentation = 0.0;        // d, m
   Eigen::VectorXd steady_force;    // F_s, N
   Eigen::VectorXd steady_displacement;  // tread surface position in steady rolling, m

@@ -30,6 +30,7 @@
 #include "greens/greens_model.hpp"
 #include "greens/model_factory.hpp"
 #include "greens/plate_factory.hpp"
+#include "greens/two_layer_factory.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -378,8 +379,12 @@ TEST(CaseFileFuzz, ProjectCasesLoadAndRead) {
   for (const auto& file : files) {
     SCOPED_TRACE(file.string());
     const rollnoise::CaseFile cases = rollnoise::CaseFile::load(file);
-    if (cases.section("tyre").text("model") == "plate") {
+    const std::string model = cases.section("tyre").text("model");
+    if (model == "plate") {
       EXPECT_NO_THROW((void)rollnoise::read_plate_tyre(cases.section("tyre")));
+      EXPECT_NO_THROW((void)rollnoise::read_tyre_rolling_settings(cases.section("rolling")));
+    } else if (model == "two_layer") {
+      EXPECT_NO_THROW((void)rollnoise::read_two_layer_tyre(cases.section("tyre")));
       EXPECT_NO_THROW((void)rollnoise::read_tyre_rolling_settings(cases.section("rolling")));
     } else {
       EXPECT_NO_THROW((void)rollnoise::make_greens_model(cases.section("tyre")));

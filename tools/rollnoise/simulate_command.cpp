@@ -54,13 +54,15 @@ int run_simulate(const SimulateOptions& options) {
       const std::string directory = file.optional_section("output").text("directory", "");
       out = !directory.empty() ? fs::path(directory) : fs::path("out") / fs::path(file.path()).stem();
     }
-    if (file.section("tyre").choice("model", {"sdof", "coupled_sdof", "plate"}) == "plate") {
+    const std::string kind = file.section("tyre").choice("model", {"sdof", "coupled_sdof", "plate", "two_layer", "tabulated"});
+    if (kind != "sdof" && kind != "coupled_sdof") {
       return run_tyre_simulation(file, out, started);
     }
     const ConfigTable tyre = file.section("tyre");
     if (file.top().contains("radiation")) {
       throw InputError(file.name(), "radiation",
-                       "point models (sdof, coupled_sdof) have no radiating surface; [radiation] needs model = \"plate\"");
+                       "point models (sdof, coupled_sdof) have no radiating surface; [radiation] needs a tyre model "
+                       "(\"plate\", \"two_layer\" or \"tabulated\")");
     }
     const ConfigTable road_table = file.section("road");
     const ConfigTable rolling = file.section("rolling");

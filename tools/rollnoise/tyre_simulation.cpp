@@ -21,7 +21,9 @@
 #include "core/progress.hpp"
 #include "greens/kropp_plate.hpp"
 #include "greens/centre_line_response.hpp"
+#include "greens/modal_table_cache.hpp"
 #include "greens/plate_factory.hpp"
+#include "greens/rolling_tyre_model.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
 #include "point_contact_output.hpp"
@@ -215,20 +217,20 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
 }
 
 // Cells around the tyre: as given, or (by default) the least even count that lets one step per
-// cell carry the band_top band (rolling_settings.hpp), and never fewer than the plate's orders
+// cell carry the band_top band (rolling_settings.hpp), and never fewer than the model's orders
 // need (2·M) nor than the paper's 512.
-int circumferential_points(const TyreRollingSettings& settings, const PlateParameters& plate,
+int circumferential_points(const TyreRollingSettings& settings, const RollingTyreModel& model,
                            const ConfigTable& rolling) {
   if (settings.points_circumferential > 0) return settings.points_circumferential;
   if (settings.band_top <= 0.0) return 512;
-  const int needed = circumferential_points_for_band(settings.band_top, 2.0 * std::numbers::pi * plate.radius,
+  const int needed = circumferential_points_for_band(settings.band_top, 2.0 * std::numbers::pi * model.radius,
                                                      settings.speed);
   constexpr int largest = 1 << 16;
   if (needed > largest)
     rolling.fail("band_top", "needs " + std::to_string(needed) + " cells around the tyre at this speed (at most " +
                                  std::to_string(largest) + "): lower band_top, raise speed, or give "
                                  "points_circumferential (the band is then carried by sub-steps)");
-  return std::max({needed, 512, 2 * plate.circumferential_modes});
+  return std::max({needed, 512, 2 * model.modes->orders()});
 }
 
 }  // namespace
@@ -239,21 +241,21 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   const ConfigTable rolling = file.section("rolling");
   const ConfigTable output = file.optional_section("output");
 
-  const PlateTyre model = read_plate_tyre(tyre);
+  const RollingTyreModel model = read_rolling_tyre_model(tyre, default_cache_directory());
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
   // The radiated band reaches the upper edge of the band_top band (5623 Hz for 5 kHz) unless
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
-      read_tyre_sound_settings(file.optional_section("radiation"), output, model.plate.radius, model.plate.width,
+      read_tyre_sound_settings(file.optional_section("radiation"), output, model.radius, model.width,
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
 
   TyreGrid grid;
-  grid.radius = model.plate.radius;
-  grid.width = model.plate.width;
-  grid.circumferential = circumferential_points(settings, model.plate, rolling);
+  grid.radius = model.radius;
+  grid.width = model.width;
+  grid.circumferential = circumferential_points(settings, model, rolling);
   grid.lateral = settings.points_lateral;
   grid.crown_radius = model.crown_radius;
   grid.tread_width = model.tread_width;
@@ -263,17 +265,22 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   } catch (const std::invalid_argument& error) {
     throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
   }
-  const KroppPlate plate(model.plate);
   // Sub-steps per cell so that the contact steps carry the band_top band (rolling_settings.hpp).
   const int substeps = substeps_for_band(settings.band_top, grid.dx(), settings.speed);
   const double dt = grid.dx() / (substeps * settings.speed);
   std::unique_ptr<RollingModes> rolling_modes;
   try {
-    rolling_modes = std::make_unique<RollingModes>(plate, grid, dt, substeps);
+    rolling_modes = std::make_unique<RollingModes>(*model.modes, grid, dt, substeps);
   } catch (const std::invalid_argument& error) {
     throw InputError(tyre.source_of("circumferential_modes"), "[tyre] circumferential_modes", error.what());
   }
-  const Eigen::MatrixXd local = tread_compliance(model.tread, grid);
+  // The local compliance: the plate's separate tread, or, for a model that includes its tread,
+  // the static compliance of its modes beyond the table (static_residual.hpp).
+  std::vector<double> lateral_y(static_cast<std::size_t>(grid.lateral));
+  for (int j = 0; j < grid.lateral; ++j) lateral_y[static_cast<std::size_t>(j)] = grid.y(j);
+  const Eigen::MatrixXd local = model.tread      ? tread_compliance(*model.tread, grid)
+                                : model.residual ? model.residual(grid.window, grid.dx(), lateral_y, grid.dy())
+                                                 : Eigen::MatrixXd::Zero(grid.points(), grid.points());
   // The run samples t = n·dt for n = 0 … steps (rolling_tyre.cpp), which can end up to half a
   // step after `duration`: the road must reach the last step's position.
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
@@ -289,11 +296,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                             settings.road_sampling};
   const auto contact_started = std::chrono::steady_clock::now();
   std::unique_ptr<NonlinearTread> springs;
-  if (model.tread.type == TreadSettings::Type::nonlinear) {
+  if (model.tread && model.tread->type == TreadSettings::Type::nonlinear) {
     // spring_stiffness is per area: each point carries its cell's share.
     springs = std::make_unique<NonlinearTread>(NonlinearTread{
-        Eigen::VectorXd::Constant(grid.points(), model.tread.spring_stiffness * grid.dx() * grid.dy()),
-        model.tread.spring_exponent});
+        Eigen::VectorXd::Constant(grid.points(), model.tread->spring_stiffness * grid.dx() * grid.dy()),
+        model.tread->spring_exponent});
   }
   const TyreContactTrace trace = simulate_rolling_tyre(*rolling_modes, local, *road, run, &progress, springs.get());
   const double contact_seconds =
@@ -314,9 +321,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
     shape.patch_length = trace.contact_length.mean();
     shape.patch_width = std::min(trace.contact_width.mean(), grid.width);
     shape.indentation = trace.indentation;
-    shape.belt_tension = model.plate.tension_x;
-    shape.belt_bending = model.plate.bending_x;
-    shape.foundation_stiffness = model.plate.foundation_stiffness;
+    shape.belt_tension = model.belt_tension;
+    shape.belt_bending = model.belt_bending;
+    shape.foundation_stiffness = model.foundation_stiffness;
     const double crown_drop = model.crown_radius > 0.0 ? (0.25 * grid.width * grid.width - 0.25 * shape.patch_width * shape.patch_width) /
                                                              (2.0 * model.crown_radius)
                                                        : 0.0;
@@ -349,18 +356,31 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
       write_fields(staged.staging() / "contact.h5", trace, *rolling_modes, settings.speed, settings.static_load,
                    &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
   if (plots) {
-    plot_tyre_run(staged.staging(), "plate on a " + road->type() + " road", trace.time(snapshot));
-    write_greens_circumference(staged.staging(), *make_plate_centre_line(model.plate), grid.circumferential);
+    plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", trace.time(snapshot));
+    write_greens_circumference(staged.staging(), *make_centre_line_response(tyre), grid.circumferential);
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 
   const double mean_power = trace.input_power.mean();
   nlohmann::json summary;
   summary["case"] = file.name();
-  summary["model"] = "plate";
-  summary["tread"] = model.tread.type == TreadSettings::Type::winkler     ? "winkler"
-                    : model.tread.type == TreadSettings::Type::halfspace ? "halfspace"
-                                                                         : "nonlinear";
+  summary["model"] = model.model;
+  summary["tread"] = !model.tread                                         ? "included in the model"
+                     : model.tread->type == TreadSettings::Type::winkler   ? "winkler"
+                     : model.tread->type == TreadSettings::Type::halfspace ? "halfspace"
+                                                                           : "nonlinear";
+  if (model.fit) {
+    summary["mode_fit"] = {{"modes", model.fit->modes},
+                           {"poles", model.fit->poles},
+                           {"unconverged_modes", model.fit->unconverged},
+                           {"worst_relative_rms_error", model.fit->worst_rms_error},
+                           {"mean_relative_rms_error", model.fit->mean_rms_error},
+                           {"worst_relative_max_error", model.fit->worst_max_error},
+                           {"worst_mode", {model.fit->worst_order, model.fit->worst_lateral_order}},
+                           {"fit_time_s", model.fit->seconds},
+                           {"table_time_s", model.table_seconds},
+                           {"table_from_cache", model.table_from_cache}};
+  }
   summary["road"] = road->type();
   summary["mean_total_force_N"] = trace.total_force.mean();
   summary["max_total_force_N"] = trace.total_force.maxCoeff();
@@ -374,6 +394,9 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["history_engine"] = trace.engine;
   summary["lcp_iterations"] = summarise_iterations(trace.lcp_iterations);
   summary["contact_matrix_skewness"] = trace.contact_matrix_skewness;
+  summary["lagged_skew_growth"] = trace.lagged_skew_growth;
+  summary["contact_step"] = trace.skew_part_lagged ? "symmetric LCP, G0's skew part one step late"
+                                                   : "P-matrix LCP with the whole G0";
   summary["grid"] = {{"points_circumferential", grid.circumferential},
                      {"points_lateral", grid.lateral},
                      {"contact_window_points", grid.window},
@@ -394,13 +417,15 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"history", to_string(settings.history)}};
   if (sound.enabled) {
     std::unique_ptr<TyreBudget> budget;
-    if (belt_psd) {
+    // The budget's independent estimates are the plate's (point mobility, patch receptance).
+    if (belt_psd && model.plate && model.tread) {
+      const KroppPlate plate(*model.plate);
       // k_c of the single-point estimate: the tread springs over the mean contact area, in
       // parallel (a nonlinear tread's springs taken as linear; a half-space tread as rigid).
       const double area = trace.contact_area.mean();
       const double contact_stiffness =
-          model.tread.type == TreadSettings::Type::winkler     ? model.tread.stiffness_per_area * area
-          : model.tread.type == TreadSettings::Type::nonlinear ? model.tread.spring_stiffness * area
+          model.tread->type == TreadSettings::Type::winkler     ? model.tread->stiffness_per_area * area
+          : model.tread->type == TreadSettings::Type::nonlinear ? model.tread->spring_stiffness * area
                                                                : std::numeric_limits<double>::infinity();
       budget = std::make_unique<TyreBudget>(tyre_budget(trace, grid, plate, *belt_psd, settings.speed, 1.0 / dt,
                                                         budget_bands(1.0 / dt, sound.radiation.max_frequency_hz),

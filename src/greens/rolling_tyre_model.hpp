@@ -1,0 +1,55 @@
+#pragma once
+// The tyre of a rolling case, whichever its model (issue 11, "any tyre model rolls"): its modes
+// for the rolling code (modal_tyre.hpp), the separate tread that only the plate needs, the
+// contact geometry, and the few figures later stages take from it. The plate is exact; the
+// two-layer tyre is tabulated per mode (cached by a digest of its parameters) and fitted with
+// poles (fitted_modal_tyre.hpp).
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <span>
+#include <optional>
+#include <string>
+
+#include "greens/fitted_modal_tyre.hpp"
+#include "greens/kropp_plate.hpp"
+#include "greens/modal_tyre.hpp"
+#include "greens/plate_factory.hpp"
+
+namespace rollnoise {
+
+class ConfigTable;
+
+struct RollingTyreModel {
+  std::string model;                 // "plate" | "two_layer" | "tabulated"
+  std::unique_ptr<ModalTyre> modes;  // what rolls
+  double radius = 0.0;               // m
+  double width = 0.0;                // m, the span of the lateral shapes
+  double crown_radius = 0.0;         // m, 0 = flat across
+  double tread_width = 0.0;          // m, the width that meets the road
+  // The plate's separate tread ([tyre.tread]); absent for models that include their tread.
+  std::optional<TreadSettings> tread;
+  std::optional<PlateParameters> plate;  // the plate's parameters (the energy budget's estimates)
+  // The belt's membrane tension, bending stiffness along the circumference and foundation: the
+  // radiating body's deflected shape beyond the patch (tyre_surface_mesh.hpp).
+  double belt_tension = 0.0;          // N/m
+  double belt_bending = 0.0;          // N·m
+  double foundation_stiffness = 0.0;  // N/m³
+  // Models that include their tread: the static compliance between the contact cells of the
+  // modes beyond the table (static_residual.hpp), for a window of `window` cells of length dx
+  // along x and lateral cells centred at y (from the edge of the lateral shapes' span), dy
+  // wide (p = i + Nw·j). Empty for the plate, whose tread is separate.
+  std::function<Eigen::MatrixXd(int window, double dx, std::span<const double> y, double dy)> residual;
+  // Fitted models: the table's origin and the fit's accuracy.
+  bool table_from_cache = false;
+  double table_seconds = 0.0;
+  std::optional<ModalFitReport> fit;
+};
+
+// Reads the [tyre] table (or a model file's top level) of model plate, two_layer or tabulated.
+// `cache_directory`: where two-layer tables are kept between runs (none: not cached). Unknown
+// keys, non-physical values and a [tyre.tread] given to a model that includes its tread are
+// InputErrors naming the file and the key.
+RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre, const std::optional<std::filesystem::path>& cache_directory);
+
+}  // namespace rollnoise

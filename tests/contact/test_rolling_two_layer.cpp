@@ -1,0 +1,167 @@
+// The two-layer tyre through the common rolling path (issue 11): its modes tabulated and fitted
+// with poles (greens/fitted_modal_tyre.hpp), its tread's local compliance from its own modes plus
+// the static residual of those beyond the table (greens/static_residual.hpp), no separate tread.
+//   - The fitted modes against the tyre's own receptance between cells (two_layer_tyre.cpp, which
+//     sums the exact layer solutions itself): the scaling, lateral shapes and cell factors.
+//   - Smooth road: the steady state holds (the whole-G0 P-matrix step keeps it to round-off).
+//   - Rough road: F ≥ 0, no penetration and complementarity at every step; the modal engine
+//     equals the direct one (the closed-form sheared kernel of the same poles).
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "contact/rolling_tyre.hpp"
+#include "greens/fitted_modal_tyre.hpp"
+#include "greens/static_residual.hpp"
+#include "greens/two_layer_tyre.hpp"
+#include "road/road_surface.hpp"
+
+namespace rollnoise {
+namespace {
+
+using std::numbers::pi;
+
+// The passenger file's values with few modes (tests/greens/two_layer_test_support.hpp's set).
+TwoLayerParameters small_two_layer() {
+  TwoLayerParameters p;
+  p.radius = 0.316;
+  p.width = 0.18;
+  p.belt = {3.0e9, 1.3e9, 3.0e7, 8.0e8, 1.0e7, 1.0e7, 0.3, 0.45, 0.45};
+  p.belt_thickness = 0.003;
+  p.belt_density = 2000.0;
+  p.belt_loss_factor = 0.05;
+  p.tread_thickness = 0.007;
+  p.tread_density = 1150.0;
+  p.tread_youngs_modulus = 4.0e6;
+  p.tread_poisson_ratio = 0.48;
+  p.tread_loss_factor = 0.1;
+  p.tension_x = 6.0e4;
+  p.tension_y = 9.0e3;
+  p.foundation_stiffness = 1.5e6;
+  p.foundation_loss_factor = 0.08;
+  p.circumferential_modes = 24;
+  p.lateral_modes = 5;
+  return p;
+}
+
+TyreGrid small_grid() {
+  TyreGrid g;
+  g.radius = 0.316;
+  g.width = 0.18;
+  g.circumferential = 64;
+  g.lateral = 4;
+  g.tread_width = 0.14;
+  g.window = 12;
+  return g;
+}
+
+struct FittedTwoLayer {
+  TwoLayerTyre layers;
+  FittedModalTyre modes;
+  explicit FittedTwoLayer(const TwoLayerParameters& p)
+      : layers(p),
+        modes(tabulate_two_layer(layers, tyre_mode_fit_frequencies(), p.circumferential_modes), "two_layer", true,
+              tyre_mode_fit_options()) {}
+  Eigen::MatrixXd residual(const TyreGrid& grid) const {
+    KeptModes kept{layers.circumference(), layers.width(), LateralShape::sine, 1, layers.parameters().lateral_modes,
+                   layers.parameters().circumferential_modes};
+    std::vector<double> y;
+    for (int j = 0; j < grid.lateral; ++j) y.push_back(grid.y(j));
+    return static_residual_compliance(
+        kept, [&](double kx, double ky) { return layers.wavenumber_compliance(kx, ky, 0.0)(2, 2).real(); },
+        grid.window, grid.dx(), y, grid.dy());
+  }
+};
+
+const FittedTwoLayer& tyre() {
+  static const FittedTwoLayer fitted(small_two_layer());
+  return fitted;
+}
+
+TEST(RollingTwoLayer, FittedModesGiveTheTyresReceptanceBetweenCells) {
+  const FittedTwoLayer& t = tyre();
+  EXPECT_EQ(t.modes.fit_report().unconverged, 0u);
+  const TyreGrid grid = small_grid();
+  const double dx = grid.dx(), dy = grid.dy();
+  for (const double f : {0.0, 90.0, 700.0, 3000.0}) {
+    const double omega = 2 * pi * f;
+    const auto exact = t.layers.response(omega);
+    for (const int di : {0, 1, 3}) {
+      const SurfaceLocation r{di * dx, grid.y(1), dx, dy}, s{0.0, grid.y(2), dx, dy};
+      const std::complex<double> reference = exact.receptance(r, s);
+      std::complex<double> sum = 0.0;
+      double magnitudes = 0.0;  // Σ|term|: the scale each mode's own fit error acts on
+      for (int l = 0; l < t.modes.lateral_modes(); ++l)
+        for (int m = 0; m <= t.modes.orders(); ++m) {
+          const std::complex<double> term = (m == 0 ? 1.0 : 2.0) *
+                                            std::cos(2 * pi * m * di * dx / grid.circumference()) *
+                                            t.modes.mode_response(m, l, dx, dy).receptance(omega) *
+                                            t.modes.lateral_shape(l, r.y) * t.modes.lateral_shape(l, s.y);
+          sum += term;
+          magnitudes += std::abs(term);
+        }
+      // Each mode's fit is within 3e-3 RMS (3e-2 at worst) of its table: the sum within 1e-2 of
+      // the terms' magnitudes (where terms cancel, as between cells at 3 kHz, relative to the sum
+      // itself it can be a few per cent).
+      EXPECT_LT(std::abs(sum - reference), 1e-2 * magnitudes) << f << " Hz, " << di << " cells: " << sum << " vs "
+                                                              << reference;
+      if (di == 0) {
+        EXPECT_LT(std::abs(sum - reference), 1e-2 * std::abs(reference)) << f << " Hz, the cell itself";
+      }
+    }
+  }
+}
+
+class Bumps : public RoadSurface {
+ public:
+  std::string type() const override { return "bumps"; }
+  double height(double x, double y) const override {
+    if (x < 0.0) return 0.0;
+    return 1.5e-3 * std::sin(2 * M_PI * x / 0.09) * std::sin(2 * M_PI * x / 0.31) * (1.0 + 4.0 * y);
+  }
+};
+
+class Flat : public RoadSurface {
+ public:
+  std::string type() const override { return "flat"; }
+  double height(double, double) const override { return 0.0; }
+};
+
+TEST(RollingTwoLayer, SmoothRoadKeepsTheSteadyStateUnderTheLoad) {
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2, load = 3200.0;
+  const RollingModes rolling(tyre().modes, grid, grid.dx() / speed);
+  const TyreContactTrace t = simulate_rolling_tyre(rolling, tyre().residual(grid), Flat(),
+                                                   {speed, 60 * grid.dx() / speed, load, HistoryKind::modal});
+  EXPECT_GT(t.contact_matrix_skewness, 1e-2);
+  // The case the whole-G0 step is for: lagging G0's skew part would amplify perturbations.
+  EXPECT_FALSE(t.skew_part_lagged) << "growth per step " << t.lagged_skew_growth;
+  EXPECT_NEAR(t.total_force.mean(), load, 5e-3 * load);
+  EXPECT_LE((t.total_force.array() - load).abs().maxCoeff(), 1e-9 * load);
+  EXPECT_GT(t.steady_rolling_resistance, 0.0);  // the layers' loss makes the pressure lean
+}
+
+TEST(RollingTwoLayer, RoughRoadContactConditionsAndEnginesAgree) {
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const RollingModes rolling(tyre().modes, grid, grid.dx() / speed);
+  const Eigen::MatrixXd local = tyre().residual(grid);
+  TyreRunSettings settings{speed, 80 * grid.dx() / speed, 3200.0, HistoryKind::modal};
+  const TyreContactTrace modal = simulate_rolling_tyre(rolling, local, Bumps(), settings);
+  const Eigen::MatrixXd gap = modal.displacement - modal.road;
+  EXPECT_GE(modal.force.minCoeff(), 0.0);
+  EXPECT_GE(gap.minCoeff(), -1e-12);  // m: no penetration
+  EXPECT_LE((modal.force.array() * gap.array()).abs().maxCoeff(), 1e-10 * modal.force.maxCoeff() * gap.maxCoeff());
+  EXPECT_LT(modal.contact_area.minCoeff(), modal.contact_area.maxCoeff());
+  settings.history = HistoryKind::direct;
+  const TyreContactTrace direct = simulate_rolling_tyre(rolling, local, Bumps(), settings);
+  EXPECT_LE((modal.force - direct.force).cwiseAbs().maxCoeff(), 1e-9 * direct.force.cwiseAbs().maxCoeff());
+  EXPECT_LE((modal.displacement - direct.displacement).cwiseAbs().maxCoeff(),
+            1e-9 * direct.displacement.cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+}  // namespace rollnoise
