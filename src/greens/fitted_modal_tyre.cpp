@@ -63,23 +63,74 @@ FittedModalTyre::FittedModalTyre(ModalReceptanceTable table, std::string name, b
   pool.clear();  // joins
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
-  report_.modes = count;
-  double sum = 0.0;
+  std::vector<double> rms(count), max(count);
+  std::vector<char> converged(count);
   for (std::size_t index = 0; index < count; ++index) {
-    const VectorFittingResult& r = results[index];
-    fits_[index] = r.response;
-    report_.poles += r.pole_count();
-    report_.unconverged += r.converged ? 0 : 1;
-    sum += r.rms_error;
-    report_.worst_max_error = std::max(report_.worst_max_error, r.max_error);
-    if (r.rms_error >= report_.worst_rms_error) {
-      report_.worst_rms_error = r.rms_error;
+    fits_[index] = results[index].response;
+    rms[index] = results[index].rms_error;
+    max[index] = results[index].max_error;
+    converged[index] = results[index].converged ? 1 : 0;
+  }
+  summarise(rms, max, converged);
+  report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+FittedModalTyre::FittedModalTyre(ModalReceptanceTable table, std::string name, bool includes_tread,
+                                 std::vector<PoleResidueResponse> fits, const VectorFittingOptions& options)
+    : table_(std::move(table)), name_(std::move(name)), includes_tread_(includes_tread), fits_(std::move(fits)) {
+  table_.validate();
+  const auto started = std::chrono::steady_clock::now();
+  const int orders = table_.orders;
+  const auto count = static_cast<std::size_t>((orders + 1) * table_.lateral_orders);
+  if (fits_.size() != count) throw std::invalid_argument("fitted modal tyre: the fits do not match the table's modes");
+  std::vector<double> rms(count), max(count);
+  std::vector<char> converged(count);
+  for (std::size_t index = 0; index < count; ++index) {
+    fits_[index].validate();
+    const int l = static_cast<int>(index / static_cast<std::size_t>(orders + 1));
+    const int m = static_cast<int>(index % static_cast<std::size_t>(orders + 1));
+    const Eigen::VectorXcd& h = table_.mode(m, table_.first_lateral_order + l);
+    // As vector_fitting.hpp measures them: relative to each sample (the static one by its real
+    // part, which is all a real response carries at ω = 0).
+    double sum = 0.0, worst = 0.0;
+    for (Eigen::Index k = 0; k < h.size(); ++k) {
+      const double omega = 2.0 * std::numbers::pi * table_.frequency(k);
+      std::complex<double> fit = fits_[index].receptance(omega), data = h(k);
+      if (omega == 0.0) {
+        fit = fit.real();
+        data = data.real();
+      }
+      const double e = std::abs(fit - data) / std::abs(data);
+      sum += e * e;
+      worst = std::max(worst, e);
+    }
+    rms[index] = std::sqrt(sum / static_cast<double>(h.size()));
+    max[index] = worst;
+    converged[index] = rms[index] <= options.target_rms_error && worst <= options.target_max_error ? 1 : 0;
+  }
+  summarise(rms, max, converged);
+  report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void FittedModalTyre::summarise(const std::vector<double>& rms, const std::vector<double>& max,
+                                const std::vector<char>& converged) {
+  const int orders = table_.orders;
+  report_ = ModalFitReport{};
+  report_.modes = fits_.size();
+  double sum = 0.0;
+  for (std::size_t index = 0; index < fits_.size(); ++index) {
+    report_.poles += fits_[index].size();
+    report_.unconverged += converged[index] ? 0 : 1;
+    sum += rms[index];
+    report_.worst_max_error = std::max(report_.worst_max_error, max[index]);
+    if (rms[index] >= report_.worst_rms_error) {
+      report_.worst_rms_error = rms[index];
       report_.worst_order = static_cast<int>(index % static_cast<std::size_t>(orders + 1));
-      report_.worst_lateral_order = table_.first_lateral_order + static_cast<int>(index / static_cast<std::size_t>(orders + 1));
+      report_.worst_lateral_order =
+          table_.first_lateral_order + static_cast<int>(index / static_cast<std::size_t>(orders + 1));
     }
   }
-  report_.mean_rms_error = count ? sum / static_cast<double>(count) : 0.0;
-  report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  report_.mean_rms_error = fits_.empty() ? 0.0 : sum / static_cast<double>(fits_.size());
 }
 
 const PoleResidueResponse& FittedModalTyre::fitted(int m, int l) const {

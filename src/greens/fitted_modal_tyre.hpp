@@ -42,6 +42,11 @@ class FittedModalTyre final : public ModalTyre {
   // the tread surface from elsewhere).
   FittedModalTyre(ModalReceptanceTable table, std::string name, bool includes_tread,
                   const VectorFittingOptions& options, unsigned threads = 0);
+  // With fits made before (fitted_modes_cache.hpp), one per mode in mode order (l·(M + 1) + m):
+  // their errors against `table` are measured again for the report, and `options`' targets say
+  // which count as converged. std::invalid_argument when their number or a fit is wrong.
+  FittedModalTyre(ModalReceptanceTable table, std::string name, bool includes_tread,
+                  std::vector<PoleResidueResponse> fits, const VectorFittingOptions& options);
 
   std::string name() const override { return name_; }
   double circumference() const override { return table_.circumference(); }
@@ -58,11 +63,15 @@ class FittedModalTyre final : public ModalTyre {
   const PoleResidueResponse& fitted(int m, int l) const;
   const ModalFitReport& fit_report() const noexcept { return report_; }
   const ModalReceptanceTable& table() const noexcept { return table_; }
+  const std::vector<PoleResidueResponse>& fits() const noexcept { return fits_; }
 
  private:
   ModalReceptanceTable table_;
   std::string name_;
   bool includes_tread_;
+  // Fills report_ from each mode's errors (in mode order) and pole counts.
+  void summarise(const std::vector<double>& rms, const std::vector<double>& max, const std::vector<char>& converged);
+
   std::vector<PoleResidueResponse> fits_;  // index l·(M + 1) + m
   ModalFitReport report_;
 };

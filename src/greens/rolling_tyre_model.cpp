@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/config_table.hpp"
+#include "greens/fitted_modes_cache.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/static_residual.hpp"
 #include "greens/tabulated_factory.hpp"
@@ -41,14 +42,35 @@ void reject_separate_tread(const ConfigTable& tyre, const std::string& model) {
                            "\", which includes the tread's local deformation: remove the [tyre.tread] table");
 }
 
-RollingTyreModel fitted_model(std::string model, ModalReceptanceTable table, double seconds, bool from_cache) {
+// The fits come from the cache under `fit_key` when it has them (their errors measured again
+// against the table), otherwise they are made and stored there.
+RollingTyreModel fitted_model(std::string model, ModalReceptanceTable table, double seconds, bool from_cache,
+                              const std::optional<std::filesystem::path>& cache_directory, const std::string& fit_key) {
   RollingTyreModel out;
   out.model = model;
   out.radius = table.radius;
   out.width = table.width;
   out.table_seconds = seconds;
   out.table_from_cache = from_cache;
-  auto fitted = std::make_unique<FittedModalTyre>(std::move(table), std::move(model), true, tyre_mode_fit_options());
+  const VectorFittingOptions options = tyre_mode_fit_options();
+  const auto modes = static_cast<std::size_t>((table.orders + 1) * table.lateral_orders);
+  std::unique_ptr<FittedModalTyre> fitted;
+  if (cache_directory && !fit_key.empty()) {
+    if (auto fits = load_cached_fits(*cache_directory, fit_key, modes)) {
+      fitted = std::make_unique<FittedModalTyre>(std::move(table), model, true, std::move(*fits), options);
+      out.fits_from_cache = true;
+    }
+  }
+  if (!fitted) {
+    fitted = std::make_unique<FittedModalTyre>(std::move(table), std::move(model), true, options);
+    if (cache_directory && !fit_key.empty()) {
+      try {
+        store_cached_fits(*cache_directory, fit_key, fitted->fits());
+      } catch (const std::exception&) {
+        // A cache that cannot be written costs only the next run's fitting time.
+      }
+    }
+  }
   out.fit = fitted->fit_report();
   out.modes = std::move(fitted);
   return out;
@@ -92,10 +114,12 @@ RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
   if (model == "two_layer") {
     const TwoLayerParameters p = read_two_layer_tyre(tyre);
     const TwoLayerTyre layers(p);
-    ModalReceptanceTable table =
-        cached_two_layer_table(layers, tyre_mode_fit_frequencies(), p.circumferential_modes, cache_directory);
+    const Eigen::VectorXd frequencies = tyre_mode_fit_frequencies();
+    ModalReceptanceTable table = cached_two_layer_table(layers, frequencies, p.circumferential_modes, cache_directory);
     const bool from_cache = table.source != "two_layer";
-    RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), from_cache);
+    const std::string fit_key =
+        fitted_modes_key(two_layer_table_key(p, p.circumferential_modes, frequencies), tyre_mode_fit_options());
+    RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), from_cache, cache_directory, fit_key);
     out.crown_radius = p.crown_radius;
     out.tread_width = p.tread_width > 0.0 ? p.tread_width : p.width;
     out.belt_tension = p.tension_x;
@@ -119,7 +143,7 @@ RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
     return out;
   }
   ModalReceptanceTable table = read_tabulated_tyre(tyre);
-  RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false);
+  RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false, std::nullopt, "");
   out.tread_width = out.width;
   return out;
 }

@@ -42,6 +42,7 @@ struct RollingTyreModel {
   std::function<Eigen::MatrixXd(int window, double dx, std::span<const double> y, double dy)> residual;
   // Fitted models: the table's origin and the fit's accuracy.
   bool table_from_cache = false;
+  bool fits_from_cache = false;
   double table_seconds = 0.0;
   std::optional<ModalFitReport> fit;
 };

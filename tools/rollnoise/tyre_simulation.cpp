@@ -379,7 +379,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                            {"worst_mode", {model.fit->worst_order, model.fit->worst_lateral_order}},
                            {"fit_time_s", model.fit->seconds},
                            {"table_time_s", model.table_seconds},
-                           {"table_from_cache", model.table_from_cache}};
+                           {"table_from_cache", model.table_from_cache},
+                           {"fits_from_cache", model.fits_from_cache}};
   }
   summary["road"] = road->type();
   summary["mean_total_force_N"] = trace.total_force.mean();

@@ -1,0 +1,155 @@
+#include "greens/fitted_modes_cache.hpp"
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace rollnoise {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char magic[] = "RNFITS01";
+constexpr std::size_t magic_size = 8;
+// At most this many poles per mode: a damaged count must not make the reader allocate wildly.
+constexpr std::uint64_t max_poles = 4096;
+
+std::uint64_t fnv1a(const char* data, std::size_t n) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < n; ++i) {
+    hash ^= static_cast<unsigned char>(data[i]);
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+void put(std::string& out, const void* data, std::size_t n) { out.append(static_cast<const char*>(data), n); }
+void put_u64(std::string& out, std::uint64_t v) { put(out, &v, sizeof v); }
+void put_double(std::string& out, double v) { put(out, &v, sizeof v); }
+
+class Cursor {
+ public:
+  explicit Cursor(std::string_view bytes) : bytes_(bytes) {}
+  bool take(void* out, std::size_t n) {
+    if (n > bytes_.size() - pos_) return false;
+    std::memcpy(out, bytes_.data() + pos_, n);
+    pos_ += n;
+    return true;
+  }
+  bool u64(std::uint64_t& v) { return take(&v, sizeof v); }
+  bool real(double& v) { return take(&v, sizeof v); }
+  std::size_t position() const noexcept { return pos_; }
+
+ private:
+  std::string_view bytes_;
+  std::size_t pos_ = 0;
+};
+
+fs::path file_of(const fs::path& directory, const std::string& key) {
+  if (key.empty() || key.front() == '.' ||
+      key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
+    throw std::invalid_argument("fitted modes cache: the key \"" + key + "\" is not a plain file name");
+  return directory / (key + ".fits");
+}
+
+}  // namespace
+
+std::string fitted_modes_key(const std::string& table_key, const VectorFittingOptions& o) {
+  std::string fields;
+  for (const double v : {static_cast<double>(o.starting_pole_pairs), static_cast<double>(o.real_poles),
+                         static_cast<double>(o.maximum_pole_pairs), static_cast<double>(o.iterations),
+                         o.target_rms_error, o.target_max_error, static_cast<double>(o.weighting == FitWeighting::relative),
+                         static_cast<double>(o.spacing == StartingPoleSpacing::logarithmic),
+                         static_cast<double>(o.fit_direct)})
+    put_double(fields, v);
+  static constexpr char digits[] = "0123456789abcdef";
+  const std::uint64_t hash = fnv1a(fields.data(), fields.size());
+  std::string hex(16, '0');
+  for (int i = 0; i < 16; ++i) hex[static_cast<std::size_t>(15 - i)] = digits[(hash >> (4 * i)) & 0xf];
+  return table_key + "-fit-" + hex;
+}
+
+std::optional<std::vector<PoleResidueResponse>> load_cached_fits(const fs::path& directory, const std::string& key,
+                                                                 std::size_t modes) {
+  const fs::path file = file_of(directory, key);
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) return std::nullopt;
+  if (bytes.size() < magic_size + 3 * sizeof(std::uint64_t)) return std::nullopt;
+  const std::size_t body = bytes.size() - sizeof(std::uint64_t);
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, bytes.data() + body, sizeof stored);
+  if (stored != fnv1a(bytes.data(), body)) return std::nullopt;
+  Cursor c(std::string_view(bytes.data(), body));
+  char head[magic_size];
+  std::uint64_t key_size = 0, count = 0;
+  if (!c.take(head, magic_size) || std::memcmp(head, magic, magic_size) != 0) return std::nullopt;
+  if (!c.u64(key_size) || key_size != key.size()) return std::nullopt;
+  std::string stored_key(key_size, '\0');
+  if (!c.take(stored_key.data(), key_size) || stored_key != key) return std::nullopt;
+  if (!c.u64(count) || count != modes) return std::nullopt;
+  std::vector<PoleResidueResponse> fits(modes);
+  for (auto& fit : fits) {
+    std::uint64_t poles = 0;
+    if (!c.real(fit.direct) || !c.u64(poles) || poles > max_poles) return std::nullopt;
+    fit.poles.resize(poles);
+    fit.residues.resize(poles);
+    for (std::uint64_t s = 0; s < poles; ++s) {
+      double v[4];
+      for (double& x : v)
+        if (!c.real(x)) return std::nullopt;
+      fit.poles[s] = {v[0], v[1]};
+      fit.residues[s] = {v[2], v[3]};
+    }
+    try {
+      fit.validate();
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;
+    }
+  }
+  if (c.position() != body) return std::nullopt;
+  return fits;
+}
+
+void store_cached_fits(const fs::path& directory, const std::string& key, const std::vector<PoleResidueResponse>& fits) {
+  const fs::path file = file_of(directory, key);
+  std::string out;
+  put(out, magic, magic_size);
+  put_u64(out, key.size());
+  out += key;
+  put_u64(out, fits.size());
+  for (const auto& fit : fits) {
+    put_double(out, fit.direct);
+    put_u64(out, fit.poles.size());
+    for (std::size_t s = 0; s < fit.poles.size(); ++s) {
+      put_double(out, fit.poles[s].real());
+      put_double(out, fit.poles[s].imag());
+      put_double(out, fit.residues[s].real());
+      put_double(out, fit.residues[s].imag());
+    }
+  }
+  put_u64(out, fnv1a(out.data(), out.size()));
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw std::runtime_error("cannot create the cache folder " + directory.string() + ": " + ec.message());
+  // A name of this process alone, so that two runs storing the same fits do not interleave.
+  const fs::path temporary = file.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream o(temporary, std::ios::binary | std::ios::trunc);
+    o.write(out.data(), static_cast<std::streamsize>(out.size()));
+    if (!o) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, file, ec);
+  if (ec) throw std::runtime_error("cannot rename " + temporary.string() + ": " + ec.message());
+}
+
+}  // namespace rollnoise
