@@ -1,30 +1,41 @@
 #!/usr/bin/env bash
-# Speed of the rolling tyre on plate_rough_80kmh: 1 s of rolling with the modal engine, and a
-# shortened run with both engines for the per-step speed-up over `direct` (whose dense kernel
-# grows with the run: it is the reference, not a production engine). Timed CLI runs; the figures
-# come from each run's summary.json (step_loop_time_s: the time-step loop alone).
+# Speed of the rolling tyre: 1 s of rolling with the modal engine, and a shortened run with both
+# engines for the per-step speed-up over `direct` (whose dense kernel grows with the run: it is
+# the reference, not a production engine). Timed CLI runs; the figures come from each run's
+# summary.json (step_loop_time_s: the time-step loop alone).
+#   bash bench/tyre_speed.sh [CASE [SHORT_DURATION_S]]
+# Defaults: models/cases/plate_rough_80kmh.toml, 0.07 s. For two_layer_rough_80kmh.toml give a
+# shorter run (0.005 s): the direct kernel takes P² doubles per lag (33 MB at 2040 points).
+# A two-layer case also reports the time to build its tables (an empty cache) and to load them
+# from the cache (rerun).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh >/dev/null
 cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF >/dev/null
 cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
 exe=build-bench/tools/rollnoise/rollnoise
-case=models/cases/plate_rough_80kmh.toml
+case=${1:-models/cases/plate_rough_80kmh.toml}
+short=${2:-0.07}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+export ROLLNOISE_CACHE="$out/cache"  # an empty cache: the first run builds the tables
 run() {  # name engine duration
   CI=true "$exe" simulate "$case" --out "$out/$1" --set rolling.history="$2" --set rolling.duration="$3" \
     --set output.plots=false >/dev/null
 }
 field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d$2)" "$out/$1/summary.json"; }
 run modal_1s modal 1.0
-run modal_short modal 0.07
-run direct_short direct 0.07
+run modal_short modal "$short"
+run direct_short direct "$short"
 steps_short=$(field modal_short "['settings']['steps']")
 modal_step=$(python3 -c "print($(field modal_short "['step_loop_time_s']")/($steps_short+1))")
 direct_step=$(python3 -c "print($(field direct_short "['step_loop_time_s']")/($steps_short+1))")
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo "plate_rough_80kmh, $(field modal_1s "['grid']['contact_points']") contact points, $(field modal_1s "['settings']['steps']") steps per simulated second"
+if grep -q '"mode_fit"' "$out/modal_1s/summary.json"; then
+  echo "tables (empty cache, first run): tabulation $(field modal_1s "['mode_fit']['table_time_s']") s, pole fits $(field modal_1s "['mode_fit']['fit_time_s']") s ($(field modal_1s "['mode_fit']['modes']") modes, $(field modal_1s "['mode_fit']['poles']") poles)"
+  echo "tables from the cache (next runs): $(field modal_short "['mode_fit']['table_time_s']") s + $(field modal_short "['mode_fit']['fit_time_s']") s (from cache: $(field modal_short "['mode_fit']['table_from_cache']"), $(field modal_short "['mode_fit']['fits_from_cache']"))"
+fi
+echo "$(basename "$case" .toml), $(field modal_1s "['grid']['contact_points']") contact points, $(field modal_1s "['settings']['steps']") steps per simulated second"
 echo "modal, 1 s of rolling: step loop $(field modal_1s "['step_loop_time_s']") s, contact stage $(field modal_1s "['contact_time_s']") s, whole run with outputs $(field modal_1s "['wall_time_s']") s"
 modal_history=$(python3 -c "print($(field modal_short "['history_engine_time_s']")/($steps_short+1))")
 direct_history=$(python3 -c "print($(field direct_short "['history_engine_time_s']")/($steps_short+1))")
