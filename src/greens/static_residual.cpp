@@ -27,32 +27,38 @@ Eigen::MatrixXd static_residual_compliance(const KeptModes& kept,
   const int n_big = std::max(first + kept.lateral_orders - 1, static_cast<int>(std::ceil(tail_factor * b / cell_width)));
   const auto ny = static_cast<Eigen::Index>(y.size());
   const Eigen::Index points = window * ny;
-  Eigen::MatrixXd residual = Eigen::MatrixXd::Zero(points, points);
-  std::vector<double> a(static_cast<std::size_t>(window));  // a_n(Δi), Δi = 0 … Nw − 1
-  Eigen::VectorXd shape(ny);
+  // a_n(Δi) for every lateral order (columns) and cell offset Δi = 0 … Nw − 1 (rows), and the
+  // lateral shapes at the cells (rows) for every order (columns).
+  const int orders_across = n_big - first + 1;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(window, orders_across);
+  Eigen::MatrixXd shapes(ny, orders_across);
   for (int n = first; n <= n_big; ++n) {
+    const int c = n - first;
     const double kn = n * pi / b;
     const double cn = sinc(0.5 * kn * cell_width);
     const double norm = length * (kept.lateral_shape == LateralShape::cosine && n == 0 ? b : 0.5 * b);
     const bool lateral_kept = n <= first + kept.lateral_orders - 1;
-    std::fill(a.begin(), a.end(), 0.0);
     for (int m = lateral_kept ? kept.orders + 1 : 0; m <= m_big; ++m) {
       const double km = 2.0 * pi * m / length;
       const double cm = sinc(0.5 * km * cell_length);
       const double term = (m == 0 ? 1.0 : 2.0) * static_compliance(km, kn) * cm * cm * cn * cn / norm;
-      for (int d = 0; d < window; ++d) a[static_cast<std::size_t>(d)] += term * std::cos(km * d * cell_length);
+      for (int d = 0; d < window; ++d) a(d, c) += term * std::cos(km * d * cell_length);
     }
     for (Eigen::Index j = 0; j < ny; ++j)
-      shape(j) = kept.lateral_shape == LateralShape::sine ? std::sin(kn * y[static_cast<std::size_t>(j)])
-                                                          : std::cos(kn * y[static_cast<std::size_t>(j)]);
+      shapes(j, c) = kept.lateral_shape == LateralShape::sine ? std::sin(kn * y[static_cast<std::size_t>(j)])
+                                                              : std::cos(kn * y[static_cast<std::size_t>(j)]);
+  }
+  // R(i_p + Nw·j_p, i_q + Nw·j_q) = Σ_n φ_n(y_p) φ_n(y_q)·a_n(|i_p − i_q|): one Ny × Ny block per
+  // offset.
+  Eigen::MatrixXd residual(points, points);
+  for (int d = 0; d < window; ++d) {
+    const Eigen::MatrixXd block = shapes * a.row(d).asDiagonal() * shapes.transpose();
     for (Eigen::Index jp = 0; jp < ny; ++jp)
-      for (Eigen::Index jq = 0; jq < ny; ++jq) {
-        const double s = shape(jp) * shape(jq);
-        if (s == 0.0) continue;
-        for (int ip = 0; ip < window; ++ip)
-          for (int iq = 0; iq < window; ++iq)
-            residual(ip + window * jp, iq + window * jq) += s * a[static_cast<std::size_t>(std::abs(ip - iq))];
-      }
+      for (Eigen::Index jq = 0; jq < ny; ++jq)
+        for (int ip = 0; ip < window; ++ip) {
+          if (ip + d < window) residual(ip + window * jp, ip + d + window * jq) = block(jp, jq);
+          if (ip - d >= 0) residual(ip + window * jp, ip - d + window * jq) = block(jp, jq);
+        }
   }
   return residual;
 }

@@ -864,3 +864,58 @@ INSTANTIATE_TEST_SUITE_P(Cases, SimulateBadInput, ::testing::ValuesIn(bad_inputs
                          [](const ::testing::TestParamInfo<BadInput>& param_info) { return param_info.param.name; });
 
 }  // namespace
+
+// The two-layer tyre through `simulate` (issue 11): a small version of the passenger file (few
+// modes, so the test is quick) on the smooth road. The run tabulates and fits its modes into the
+// cache; a second run takes both from the cache and gives the same contact.
+std::string small_two_layer_model() {
+  std::string text = read_text(fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16_two_layer.toml");
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"circumferential_modes", "24"}, {"lateral_modes", "5"}}) {
+    const std::size_t at = text.find("\n" + key + " = ");
+    const std::size_t end = text.find('\n', at + 1);
+    text.replace(at + 1, end - at - 1, key + " = " + value);
+  }
+  return text;
+}
+
+TEST(SimulateCli, TwoLayerTyreRollsThroughTheCommonPathAndCachesItsModes) {
+  Workspace ws;
+  ws.write("two_layer.toml", small_two_layer_model());
+  // A coarse grid (512 cells around, 8 across, one step per cell) keeps the run short.
+  ws.write("case.toml", edit_case(project_case("two_layer_smooth_80kmh.toml"),
+                                  {{"tyre", "file", "\"two_layer.toml\""}, {"rolling", "duration", "0.003"},
+                                   {"rolling", "points_circumferential", "512"}, {"rolling", "points_lateral", "8"},
+                                   {"rolling", "band_top", "0"}}));
+  const std::string cache = "ROLLNOISE_CACHE=" + ws.path("cache").string() + " ";
+  const RunResult first = ws.run({"simulate", "case.toml", "--out", "first"}, cache);
+  ASSERT_EQ(first.status, 0) << describe(first);
+  const nlohmann::json a = read_json(ws.path("first") / "summary.json");
+  EXPECT_EQ(a["model"], "two_layer");
+  EXPECT_EQ(a["tread"], "included in the model");
+  EXPECT_EQ(a["mode_fit"]["modes"].get<int>(), 25 * 5);
+  EXPECT_EQ(a["mode_fit"]["unconverged_modes"].get<int>(), 0);
+  EXPECT_FALSE(a["mode_fit"]["table_from_cache"].get<bool>());
+  EXPECT_FALSE(a["mode_fit"]["fits_from_cache"].get<bool>());
+  // Smooth road: steady rolling under the load from the first step.
+  EXPECT_NEAR(a["mean_total_force_N"].get<double>(), 3200.0, 1e-6 * 3200.0);
+  EXPECT_NEAR(a["max_total_force_N"].get<double>(), 3200.0, 1e-6 * 3200.0);
+  const RunResult second = ws.run({"simulate", "case.toml", "--out", "second"}, cache);
+  ASSERT_EQ(second.status, 0) << describe(second);
+  const nlohmann::json b = read_json(ws.path("second") / "summary.json");
+  EXPECT_TRUE(b["mode_fit"]["table_from_cache"].get<bool>());
+  EXPECT_TRUE(b["mode_fit"]["fits_from_cache"].get<bool>());
+  EXPECT_EQ(read_text(ws.path("first") / "contact.csv"), read_text(ws.path("second") / "contact.csv"));
+}
+
+TEST(SimulateCli, TwoLayerTyreWithASeparateTreadIsAnError) {
+  Workspace ws;
+  ws.write("two_layer.toml", small_two_layer_model() + "\n[tread]\ntype = \"winkler\"\nstiffness_per_area = 5e8\n");
+  ws.write("case.toml", edit_case(project_case("two_layer_smooth_80kmh.toml"), {{"tyre", "file", "\"two_layer.toml\""}}));
+  const RunResult r = ws.run({"simulate", "case.toml", "--out", "out"}, "ROLLNOISE_CACHE=" + ws.path("cache").string() + " ");
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "two_layer.toml")) << r.err;
+  EXPECT_TRUE(contains(r.err, "tread")) << r.err;
+  EXPECT_TRUE(contains(r.err, "includes the tread")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("out")));
+}
