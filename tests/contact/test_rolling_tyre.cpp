@@ -65,7 +65,7 @@ Eigen::MatrixXd tread(const TyreGrid& g) { return winkler_compliance(g.points(),
 
 // The plate through the common rolling path (its modes as poles) against the plate's own modal
 // form, written out here: G[k](p, q) = Σ_mn w_m Re(e^{ik_m Δx}·∫ e^{iω_m τ} h_mn)·sin sin / M with
-// h_mn the oscillator's closed form (sdof_oscillator.cpp), as RollingPlate computed it before
+// h_mn the oscillator's closed form (sdof_oscillator.cpp), as the plate's own rolling code computed it before
 // the models shared one path.
 TEST(RollingTyre, PlateModesEqualThePlatesOwnModalSum) {
   const KroppPlate plate(small_plate(0.15));
