@@ -3,18 +3,23 @@
 // line to a radial force at the centre of the belt (x = 0), in the frequency domain (receptance
 // at any ω, the static compliance at ω = 0) and in the time domain (the Green's function, the
 // paper's Fig. 5a). One interface for every model, so that the verb and its outputs are written
-// once (the point models, the plate, and the layered tyres as they arrive).
+// once (the point models, the plate, the two-layer tyre and tabulated tables).
 #include <complex>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "greens/modal_receptance_table.hpp"
+
 namespace rollnoise {
 
 class ConfigTable;
+class FittedModalTyre;
 struct PlateParameters;
 
 class CentreLineResponse {
@@ -45,10 +50,23 @@ class CentreLineResponse {
   // the frequency domain give the mean over the step ending at t_k (what the contact's step
   // kernel uses), which description() says.
   virtual Eigen::MatrixXd green_table(std::span<const double> distances, double dt, int count) const = 0;
+
+  // The model's modal receptance table at these frequencies (Hz), for models computed from
+  // parameters that have one to give (two_layer: every mode it sums, m = 0 … M), through the
+  // table cache in `cache` (none: computed); std::nullopt for the others. A `tabulated` model
+  // file pointed at the table written out gives the same receptance (within the pole fit).
+  virtual std::optional<ModalReceptanceTable> modal_table(const Eigen::VectorXd& /*frequency_hz*/,
+                                                          const std::optional<std::filesystem::path>& /*cache*/) const {
+    return std::nullopt;
+  }
+  // A model known by a table: its table and the pole fit the responses come from; null for
+  // the others.
+  virtual const FittedModalTyre* fitted_modes() const { return nullptr; }
 };
 
 // Builds the view of a model file (the keys of a [tyre] table at its top level) with the readers
-// `simulate` uses: unknown keys and unphysical values are InputErrors naming the file and key.
+// `simulate` uses: unknown keys and unphysical values are InputErrors naming the file and key;
+// a `tabulated` table that cannot be read or fitted is an InputError naming the table's file.
 std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model);
 // The plate's view, for a plate already read (simulate draws its Fig. 5a from it).
 std::unique_ptr<CentreLineResponse> make_plate_centre_line(const PlateParameters& plate);

@@ -9,9 +9,11 @@
 //     naming the file and the dataset or attribute;
 //   - the cache: a hit returns the same table, any change of a parameter (by one ulp) misses, a
 //     corrupt cache file is recomputed and overwritten; the key is stable;
-//   - the `tabulated` model file.
+//   - the `tabulated` model file, and its centre-line view (`rollnoise greens`): a table written
+//     from a two-layer model gives that model's receptance and step means, within the pole fit.
 // Small tables (a few modes and frequencies) keep it fast; the passenger tyre's timing is a
 // disabled test (run it with --gtest_also_run_disabled_tests).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -29,6 +31,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -39,6 +42,8 @@
 #include "core/error.hpp"
 #include "core/hdf5_reader.hpp"
 #include "core/hdf5_writer.hpp"
+#include "greens/centre_line_response.hpp"
+#include "greens/fitted_modal_tyre.hpp"
 #include "greens/modal_receptance_table.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
@@ -576,6 +581,92 @@ TEST(TabulatedTyre, ModelFileReadsTheTableBesideIt) {
   write_modal_table(temp.path() / "tables" / "tyre.h5", table);
   std::ofstream(temp.path() / "tables" / "tyre.h5", std::ios::binary | std::ios::trunc) << "not a table";
   EXPECT_MENTIONS(input_error_of([&] { (void)read_tabulated_tyre(CaseFile::load_model(model).top()); }), "tyre.h5");
+}
+
+// The round trip of `rollnoise greens`: a two-layer model's own table (its modes, m = 0 … M, at
+// the fit's frequencies) written out and read back as a `tabulated` model file gives the
+// two-layer view's cell receptance (each within the pole fit: 3e-3 RMS, 3e-2 at worst per mode)
+// and its step means (by FFT there, closed form here). A reduced passenger file (M = 16, N = 4)
+// keeps it quick; both side conditions, so both lateral shapes.
+TEST(TabulatedCentreLine, TableWrittenFromTwoLayerGivesItsReceptance) {
+  const test::TempFolder temp("rollnoise_test_tabulated_view_");
+  const std::string passenger = [] {
+    std::ifstream in(fs::path(ROLLNOISE_SOURCE_DIR) / "models/tyres/passenger_205_55R16_two_layer.toml");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  for (const std::string side : {"simply_supported", "sliding"}) {
+    SCOPED_TRACE(side);
+    std::string text = passenger;
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+             {"circumferential_modes = 256", "circumferential_modes = 16"},
+             {"lateral_modes = 25", "lateral_modes = 4"},
+             {"side_condition = \"simply_supported\"", "side_condition = \"" + side + "\""}}) {
+      const auto at = text.find(from);
+      ASSERT_NE(at, std::string::npos) << from;
+      text.replace(at, from.size(), to);
+    }
+    const fs::path layered_file = temp.write(side + "/two_layer.toml", text);
+    const auto layered = make_centre_line_response(CaseFile::load_model(layered_file).top());
+    std::optional<ModalReceptanceTable> table = layered->modal_table(tyre_mode_fit_frequencies(), std::nullopt);
+    ASSERT_TRUE(table.has_value());
+    EXPECT_EQ(table->orders, 16);
+    EXPECT_EQ(table->lateral_orders, 4);
+    write_modal_table(temp.path() / side / "modal_receptance.h5", *table);
+    const fs::path tabulated_file =
+        temp.write(side + "/tabulated.toml", "model = \"tabulated\"\nfile = \"modal_receptance.h5\"\n");
+    const auto tabulated = make_centre_line_response(CaseFile::load_model(tabulated_file).top());
+    EXPECT_EQ(tabulated->model(), "tabulated");
+    EXPECT_MENTIONS(tabulated->description(), "cell");
+    EXPECT_MENTIONS(tabulated->description(), "modal_receptance.h5");
+    ASSERT_NE(tabulated->fitted_modes(), nullptr);
+    EXPECT_EQ(tabulated->fitted_modes()->fit_report().unconverged, 0u);
+    EXPECT_EQ(layered->fitted_modes(), nullptr);
+    EXPECT_FALSE(tabulated->modal_table(tyre_mode_fit_frequencies(), std::nullopt).has_value());
+    EXPECT_NEAR(tabulated->circumference(), layered->circumference(), 1e-15);
+
+    // Each difference against the larger of the value and the point receptance at that
+    // frequency: near a node a transfer receptance is small, and the fit's error is a share of
+    // the modes' sum rather than of the value (700 Hz, 0.05 m, sliding: 8.8e-3 of the value).
+    double worst = 0.0, worst_own = 0.0;
+    for (const double f : {0.0, 30.0, 89.0, 250.0, 700.0, 1500.0, 3000.0, 5000.0}) {
+      const double omega = 2.0 * std::numbers::pi * f;
+      const double point = std::abs(layered->receptance(0.0, omega));
+      for (const double d : {0.0, 0.02, 0.05, 0.1, 0.2}) {
+        const cd exact = layered->receptance(d, omega);
+        const cd fitted = tabulated->receptance(d, omega);
+        const double error = std::abs(fitted - exact) / std::max(std::abs(exact), point);
+        worst = std::max(worst, error);
+        worst_own = std::max(worst_own, std::abs(fitted - exact) / std::abs(exact));
+        EXPECT_LT(error, 0.01) << f << " Hz, " << d << " m: " << fitted << " against " << exact;
+      }
+    }
+    std::printf("[ %s ] tabulated against two_layer receptance: worst difference %.2e of max(|value|, |point|), "
+                "%.2e of the value itself\n",
+                side.c_str(), worst, worst_own);
+
+    // Step means at 0.125 ms (the greens plot's), along the circumference: the two-layer view's
+    // by FFT against the fit's closed form, relative to the peak.
+    const std::vector<double> along{0.0, 0.01, 0.03, 0.1, 0.3};
+    const Eigen::MatrixXd g_exact = layered->green_table(along, 0.125e-3, 40);
+    const Eigen::MatrixXd g_fitted = tabulated->green_table(along, 0.125e-3, 40);
+    const double peak = g_exact.cwiseAbs().maxCoeff();
+    const double step_error = (g_fitted - g_exact).cwiseAbs().maxCoeff() / peak;
+    std::printf("[ %s ] step means: worst difference %.2e of the peak\n", side.c_str(), step_error);
+    EXPECT_LT(step_error, 0.01);
+  }
+}
+
+// A table that is whole but too thin for the pole fit (two frequencies) is the file's fault: an
+// InputError naming it.
+TEST(TabulatedCentreLine, TableTooThinToFitIsAnInputErrorNamingIt) {
+  const test::TempFolder temp("rollnoise_test_tabulated_thin_");
+  Eigen::VectorXd f(2);
+  f << 0.0, 100.0;
+  write_modal_table(temp.path() / "thin.h5", tabulate_two_layer(TwoLayerTyre(test::tyre_like_two_layer(2, 2)), f, 3));
+  const fs::path model = temp.write("tabulated.toml", "model = \"tabulated\"\nfile = \"thin.h5\"\n");
+  const std::string message = input_error_of([&] { (void)make_centre_line_response(CaseFile::load_model(model).top()); });
+  EXPECT_MENTIONS(message, "thin.h5");
+  EXPECT_MENTIONS(message, "fitted");
 }
 
 // The cost of the passenger tyre's table for a pole fit (orders 508, 25 lateral orders, 121
