@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@
 #include "core/hdf5_writer.hpp"
 #include "core/output_directory.hpp"
 #include "greens/centre_line_response.hpp"
+#include "greens/fitted_modal_tyre.hpp"
+#include "greens/modal_table_cache.hpp"
+#include "greens/modal_table_hdf5.hpp"
 #include "greens_plots.hpp"
 
 namespace rollnoise {
@@ -167,8 +171,11 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
       "greens",
       "Tabulate and draw a tyre model's Green's functions and mobilities: receptance.csv and mobility.csv\n"
       "(frequency_hz,distance_m,re,im), greens.h5, the Green's function along the circumference (cf. the\n"
-      "paper's Fig. 5a) and the point and transfer mobility, each plot with its gnuplot script.");
-  cmd->add_option("model", options.model, "A model file (models/tyres/NAME.toml): sdof, coupled_sdof or plate")
+      "paper's Fig. 5a) and the point and transfer mobility, each plot with its gnuplot script. For a\n"
+      "two_layer model also modal_receptance.h5, its modal table (docs/greens/tabulated_layout.md) at the\n"
+      "pole fit's frequencies, which a model file with model = \"tabulated\" can name.");
+  cmd->add_option("model", options.model,
+                  "A model file (models/tyres/NAME.toml): sdof, coupled_sdof, plate, two_layer or tabulated")
       ->required();
   cmd->add_option("--out", options.out, "Output folder (default out/<model name>_greens); written atomically");
   cmd->add_option("--frequencies", options.frequencies,
@@ -181,7 +188,10 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
   cmd->footer(
       "Examples:\n"
       "  rollnoise greens models/tyres/passenger_205_55R16.toml --out out/plate_greens\n"
-      "  rollnoise greens models/tyres/passenger_205_55R16.toml --frequencies 0:2000:201 --distances 0,0.1");
+      "  rollnoise greens models/tyres/passenger_205_55R16.toml --frequencies 0:2000:201 --distances 0,0.1\n"
+      "  rollnoise greens models/tyres/passenger_205_55R16_two_layer.toml --out out/two_layer_greens\n"
+      "    also writes out/two_layer_greens/modal_receptance.h5; a model file with model = \"tabulated\" and\n"
+      "    file = \"PATH\" (relative to that model file's folder) reads it back.");
   return cmd;
 }
 
@@ -232,6 +242,16 @@ int run_greens(const GreensOptions& options) {
   for (Eigen::Index k = 0; k < time.size(); ++k) time(k) = static_cast<double>(k + 1) * dt;
   const Eigen::MatrixXd green = response->green_table(around, dt, kTimeSamples);
 
+  // A model computed from parameters hands over its modal table, so that a `tabulated` model
+  // file can name it. Sampled where the tabulated model's pole fit wants it (0 Hz, then
+  // log-spaced 1 Hz – 20 kHz), not on --frequencies: a linear grid to 5 kHz misses the narrow
+  // low resonances and the tail the step means need. Through the cache `simulate` shares.
+  std::optional<ModalReceptanceTable> modal_table =
+      response->modal_table(tyre_mode_fit_frequencies(), default_cache_directory());
+  // The cache names a table it found by its file; a table computed afresh by the model.
+  const bool modal_table_from_cache = modal_table && modal_table->source != response->model();
+  if (modal_table) modal_table->source = response->model();
+
   const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
   StagedOutputDirectory staged(out);
   write_table(staged.staging() / "receptance.csv", frequencies, distances, receptance);
@@ -260,6 +280,7 @@ int run_greens(const GreensOptions& options) {
     h5.write("time_domain/green", green, "m/(N*s)",
              "displacement per unit impulse at x = 0, [time][distance], without the instantaneous (delta) part");
   }
+  if (modal_table) write_modal_table(staged.staging() / "modal_receptance.h5", *modal_table);
   if (tyre) {
     write_greens_circumference(staged.staging(), *response, 512);
   } else {
@@ -280,13 +301,46 @@ int run_greens(const GreensOptions& options) {
                          {"distances_m", distances},
                          {"time_step_s", dt},
                          {"time_samples", time.size()}};
+  if (modal_table) {
+    summary["modal_table"] = {
+        {"file", "modal_receptance.h5"},
+        {"layout", std::string(modal_table_layout)},
+        {"frequencies", modal_table->frequency.size()},
+        {"frequency_range_hz", {modal_table->frequency(0), modal_table->frequency(modal_table->frequency.size() - 1)}},
+        {"orders", modal_table->orders},
+        {"lateral_orders", modal_table->lateral_orders},
+        {"first_lateral_order", modal_table->first_lateral_order},
+        {"lateral_shape", modal_table->lateral_shape == LateralShape::sine ? "sine" : "cosine"},
+        {"from_cache", modal_table_from_cache},
+        {"use", "a model file with model = \"tabulated\" and file = \"<path to modal_receptance.h5>\""}};
+  }
+  if (const FittedModalTyre* fitted = response->fitted_modes()) {
+    const ModalReceptanceTable& table = fitted->table();
+    const ModalFitReport& fit = fitted->fit_report();
+    summary["table"] = {{"file", table.source},
+                        {"frequencies", table.frequency.size()},
+                        {"frequency_range_hz", {table.frequency(0), table.frequency(table.frequency.size() - 1)}},
+                        {"orders", table.orders},
+                        {"lateral_orders", table.lateral_orders},
+                        {"first_lateral_order", table.first_lateral_order},
+                        {"lateral_shape", table.lateral_shape == LateralShape::sine ? "sine" : "cosine"}};
+    summary["mode_fit"] = {{"modes", fit.modes},
+                           {"poles", fit.poles},
+                           {"unconverged_modes", fit.unconverged},
+                           {"worst_rms_error", fit.worst_rms_error},
+                           {"mean_rms_error", fit.mean_rms_error},
+                           {"worst_max_error", fit.worst_max_error},
+                           {"worst_mode", {fit.worst_order, fit.worst_lateral_order}},
+                           {"fit_time_s", fit.seconds}};
+  }
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
-  std::printf("rollnoise: wrote %s (receptance.csv, mobility.csv, greens.h5, summary.json and plots): %s, static point "
-              "compliance %.4g m/N\n",
-              out.string().c_str(), response->model().c_str(), static_compliance.front());
+  std::printf("rollnoise: wrote %s (receptance.csv, mobility.csv, greens.h5, %ssummary.json and plots): %s, static "
+              "point compliance %.4g m/N\n",
+              out.string().c_str(), modal_table ? "modal_receptance.h5, " : "", response->model().c_str(),
+              static_compliance.front());
   return 0;
 }
 
