@@ -444,11 +444,11 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
-  std::printf("rollnoise: wrote %s (contact.csv, contact.h5, summary.json%s%s)\n", out.string().c_str(),
-              sound.enabled ? (sound.wav ? ", spectrum.csv, sound_power.csv, budget.csv, WAV files"
-                                          : ", spectrum.csv, sound_power.csv, budget.csv")
-                            : "",
-              plots ? " and plots" : "");
+  std::string written = "contact.csv, contact.h5, summary.json";
+  if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
+  if (fs::exists(out / "budget.csv")) written += ", budget.csv";  // the plate's estimates only
+  if (sound.enabled && sound.wav) written += ", WAV files";
+  std::printf("rollnoise: wrote %s (%s%s)\n", out.string().c_str(), written.c_str(), plots ? " and plots" : "");
   return 0;
 }
 
