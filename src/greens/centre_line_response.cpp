@@ -9,6 +9,7 @@
 #include "core/config_table.hpp"
 #include "core/error.hpp"
 #include "greens/fitted_modal_tyre.hpp"
+#include "greens/fitted_modes_cache.hpp"
 #include "greens/kropp_plate.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/model_factory.hpp"
@@ -276,7 +277,10 @@ class TabulatedCentreLine final : public CentreLineResponse {
   static FittedModalTyre fit(ModalReceptanceTable table) {
     const std::string source = table.source;
     try {
-      return FittedModalTyre(std::move(table), "tabulated", true, tyre_mode_fit_options());
+      // Its fits through the cache, keyed by the table's content (fitted_modes_cache.hpp).
+      const std::string key = fitted_modes_key(modal_table_content_key(table), tyre_mode_fit_options());
+      bool from_cache = false;
+      return fit_with_cache(std::move(table), "tabulated", default_cache_directory(), key, from_cache);
     } catch (const std::invalid_argument& error) {
       throw InputError(source, "", std::string("its modes cannot be fitted with poles: ") + error.what());
     }

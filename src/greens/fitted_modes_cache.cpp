@@ -152,4 +152,45 @@ void store_cached_fits(const fs::path& directory, const std::string& key, const 
   if (ec) throw std::runtime_error("cannot rename " + temporary.string() + ": " + ec.message());
 }
 
+std::string modal_table_content_key(const ModalReceptanceTable& t) {
+  std::string bytes;
+  for (const double v : {t.radius, t.width, t.lateral_shape == LateralShape::sine ? 0.0 : 1.0,
+                         static_cast<double>(t.first_lateral_order), static_cast<double>(t.lateral_orders),
+                         static_cast<double>(t.orders), static_cast<double>(t.frequency.size())})
+    put_double(bytes, v);
+  for (Eigen::Index k = 0; k < t.frequency.size(); ++k) put_double(bytes, t.frequency(k));
+  for (const auto& mode : t.modes)
+    for (Eigen::Index k = 0; k < mode.size(); ++k) {
+      put_double(bytes, mode(k).real());
+      put_double(bytes, mode(k).imag());
+    }
+  static constexpr char digits[] = "0123456789abcdef";
+  const std::uint64_t hash = fnv1a(bytes.data(), bytes.size());
+  std::string hex(16, '0');
+  for (int i = 0; i < 16; ++i) hex[static_cast<std::size_t>(15 - i)] = digits[(hash >> (4 * i)) & 0xf];
+  return "table-" + hex;
+}
+
+FittedModalTyre fit_with_cache(ModalReceptanceTable table, std::string name,
+                               const std::optional<fs::path>& directory, const std::string& fit_key, bool& from_cache) {
+  const VectorFittingOptions options = tyre_mode_fit_options();
+  const auto modes = static_cast<std::size_t>((table.orders + 1) * table.lateral_orders);
+  from_cache = false;
+  if (directory && !fit_key.empty()) {
+    if (auto fits = load_cached_fits(*directory, fit_key, modes)) {
+      from_cache = true;
+      return FittedModalTyre(std::move(table), std::move(name), true, std::move(*fits), options);
+    }
+  }
+  FittedModalTyre fitted(std::move(table), std::move(name), true, options);
+  if (directory && !fit_key.empty()) {
+    try {
+      store_cached_fits(*directory, fit_key, fitted.fits());
+    } catch (const std::exception&) {
+      // A cache that cannot be written costs only the next run's fitting time.
+    }
+  }
+  return fitted;
+}
+
 }  // namespace rollnoise

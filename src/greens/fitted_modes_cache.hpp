@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "greens/fitted_modal_tyre.hpp"
+#include "greens/modal_receptance_table.hpp"
 #include "greens/pole_residue_response.hpp"
 #include "greens/vector_fitting.hpp"
 
@@ -28,5 +30,16 @@ std::optional<std::vector<PoleResidueResponse>> load_cached_fits(const std::file
 // Stores them (atomically: a temporary file renamed); std::runtime_error when it cannot.
 void store_cached_fits(const std::filesystem::path& directory, const std::string& key,
                        const std::vector<PoleResidueResponse>& fits);
+
+// A digest of a table's content (its axes, shape and every value): the key of the fits of a
+// table that has no other (a tabulated model's file), "table-" and 16 hex digits.
+std::string modal_table_content_key(const ModalReceptanceTable& table);
+
+// `table` made into a fitted tyre with tyre_mode_fit_options(): its fits from the cache under
+// `fit_key` in `directory` when there (their errors measured again against the table), otherwise
+// fitted and stored there (a cache that cannot be written is skipped). `from_cache` reports which.
+FittedModalTyre fit_with_cache(ModalReceptanceTable table, std::string name,
+                               const std::optional<std::filesystem::path>& directory, const std::string& fit_key,
+                               bool& from_cache);
 
 }  // namespace rollnoise

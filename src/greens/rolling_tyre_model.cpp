@@ -52,25 +52,10 @@ RollingTyreModel fitted_model(std::string model, ModalReceptanceTable table, dou
   out.width = table.width;
   out.table_seconds = seconds;
   out.table_from_cache = from_cache;
-  const VectorFittingOptions options = tyre_mode_fit_options();
-  const auto modes = static_cast<std::size_t>((table.orders + 1) * table.lateral_orders);
-  std::unique_ptr<FittedModalTyre> fitted;
-  if (cache_directory && !fit_key.empty()) {
-    if (auto fits = load_cached_fits(*cache_directory, fit_key, modes)) {
-      fitted = std::make_unique<FittedModalTyre>(std::move(table), model, true, std::move(*fits), options);
-      out.fits_from_cache = true;
-    }
-  }
-  if (!fitted) {
-    fitted = std::make_unique<FittedModalTyre>(std::move(table), std::move(model), true, options);
-    if (cache_directory && !fit_key.empty()) {
-      try {
-        store_cached_fits(*cache_directory, fit_key, fitted->fits());
-      } catch (const std::exception&) {
-        // A cache that cannot be written costs only the next run's fitting time.
-      }
-    }
-  }
+  bool fits_from_cache = false;
+  auto fitted = std::make_unique<FittedModalTyre>(
+      fit_with_cache(std::move(table), std::move(model), cache_directory, fit_key, fits_from_cache));
+  out.fits_from_cache = fits_from_cache;
   out.fit = fitted->fit_report();
   out.modes = std::move(fitted);
   return out;
@@ -143,7 +128,8 @@ RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
     return out;
   }
   ModalReceptanceTable table = read_tabulated_tyre(tyre);
-  RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false, std::nullopt, "");
+  const std::string fit_key = fitted_modes_key(modal_table_content_key(table), tyre_mode_fit_options());
+  RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false, cache_directory, fit_key);
   out.tread_width = out.width;
   return out;
 }

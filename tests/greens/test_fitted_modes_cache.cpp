@@ -91,5 +91,38 @@ TEST(FittedModesCache, DamagedFilesAreMisses) {
   EXPECT_EQ(misses, 300);  // every damage is caught by the digest or the checks
 }
 
+// A table's content key changes with any value; fit_with_cache fits once, then reads the same
+// poles back.
+TEST(FittedModesCache, TableContentKeyAndFitWithCache) {
+  const Folder folder;
+  ModalReceptanceTable table;
+  table.radius = 0.3;
+  table.width = 0.2;
+  table.lateral_orders = 1;
+  table.orders = 1;
+  table.frequency = default_fit_frequencies(60, 1.0, 2e4);
+  table.source = "test";
+  for (int m = 0; m <= 1; ++m) {
+    const PoleResidueResponse mode = oscillator_poles(SdofOscillator{1.0, 40.0 * (m + 1), 4e6 * (m + 1)});
+    Eigen::VectorXcd h(table.frequency.size());
+    for (Eigen::Index k = 0; k < h.size(); ++k) h(k) = mode.receptance(2 * M_PI * table.frequency(k));
+    table.modes.push_back(h);
+  }
+  const std::string key = modal_table_content_key(table);
+  EXPECT_EQ(key, modal_table_content_key(table));
+  ModalReceptanceTable changed = table;
+  changed.modes[1](7) *= 1.0 + 1e-12;
+  EXPECT_NE(key, modal_table_content_key(changed));
+  const std::string fit_key = fitted_modes_key(key, tyre_mode_fit_options());
+  bool from_cache = true;
+  const FittedModalTyre first = fit_with_cache(table, "tabulated", folder.path, fit_key, from_cache);
+  EXPECT_FALSE(from_cache);
+  const FittedModalTyre second = fit_with_cache(table, "tabulated", folder.path, fit_key, from_cache);
+  EXPECT_TRUE(from_cache);
+  for (int m = 0; m <= 1; ++m) EXPECT_EQ(first.fitted(m, 0).poles, second.fitted(m, 0).poles);
+  EXPECT_EQ(second.fit_report().unconverged, 0u);
+  EXPECT_LT(second.fit_report().worst_rms_error, 3e-3);
+}
+
 }  // namespace
 }  // namespace rollnoise
