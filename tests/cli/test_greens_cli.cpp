@@ -246,6 +246,14 @@ TEST(GreensCli, TabulatedRoundTripReproducesTheTwoLayerReceptance) {
   ASSERT_EQ(r.status, 0) << describe(r);
   EXPECT_TRUE(contains(r.out, "modal_receptance.h5")) << r.out;
   ASSERT_TRUE(fs::exists(ws.path("layered") / "modal_receptance.h5"));
+  // The free waves' map (the dispersion curves as its ridges): one row per order and frequency
+  // in 20 Hz–6 kHz.
+  ASSERT_TRUE(fs::exists(ws.path("layered") / "dispersion.csv"));
+  EXPECT_EQ(first_line(ws.path("layered") / "dispersion.csv"),
+            "wavenumber_rad_per_m,frequency_hz,log10_abs_receptance_m_per_pa");
+  if (gnuplot_installed()) {
+    EXPECT_TRUE(fs::exists(ws.path("layered") / "dispersion.png"));
+  }
   const nlohmann::json layered = read_json(ws.path("layered") / "summary.json");
   ASSERT_TRUE(layered.contains("modal_table")) << layered.dump(2);
   EXPECT_EQ(layered["modal_table"]["file"], "modal_receptance.h5");

@@ -138,6 +138,38 @@ void plot_mobility(const fs::path& dir, const CentreLineResponse& response, cons
   write_plot(dir, "mobility", gp.str());
 }
 
+// The free waves of a layered tyre (issue 11: its dispersion curves): |H_zz(m, n, f)| of the first
+// lateral order over the circumferential wavenumber k_m and the frequency, from the modal
+// table. Each free wave is a ridge of the map, k(f): the belt's flexural wave, the tread's
+// thickness resonances and the Rayleigh-like wave of the rubber (dispersion.csv, .gp, .png).
+void plot_dispersion(const fs::path& dir, const ModalReceptanceTable& table) {
+  const int n = table.first_lateral_order;
+  {
+    std::ofstream out(dir / "dispersion.csv", std::ios::binary);
+    CsvWriter csv(out, {"wavenumber_rad_per_m", "frequency_hz", "log10_abs_receptance_m_per_pa"});
+    for (int m = 0; m <= table.orders; ++m) {
+      const Eigen::VectorXcd& h = table.mode(m, n);
+      for (Eigen::Index k = 0; k < h.size(); ++k) {
+        if (table.frequency(k) < 20.0 || table.frequency(k) > 6000.0) continue;
+        const double row[] = {table.wavenumber_x(m), table.frequency(k), std::log10(std::abs(h(k)))};
+        csv.row(row, 3);
+      }
+      out << '\n';  // a blank line between orders: gnuplot's grid for pm3d
+    }
+  }
+  std::ostringstream gp;
+  gp << "# Drawn by rollnoise greens from dispersion.csv; run `gnuplot dispersion.gp` to redraw.\n"
+     << "set terminal pngcairo size 1000,650 noenhanced font 'DejaVu Sans,10'\n"
+     << "set output 'dispersion.png'\nset datafile separator ','\n"
+     << "set title 'Free waves of the " << table.source << " tyre, lateral order n = " << n
+     << ": log10 |H_zz|; its ridges are the dispersion curves'\n"
+     << "set xlabel 'circumferential wavenumber k (rad/m)'\nset ylabel 'frequency (Hz)'\nset logscale y\n"
+     << "set yrange [20:6000]\nset view map\nset pm3d map interpolate 1,1\nset palette rgb 33,13,10\n"
+     << "set cblabel 'log10 |H_zz| (m/Pa)'\n"
+     << "splot 'dispersion.csv' skip 1 using 1:2:3 with pm3d notitle\n";
+  write_plot(dir, "dispersion", gp.str());
+}
+
 // A point model's Green's function against time at each of its points (green_time.csv, .gp, .png).
 void write_green_against_time(const fs::path& dir, const CentreLineResponse& response, const Eigen::VectorXd& time,
                               const Eigen::MatrixXd& green, const std::vector<double>& points) {
@@ -280,7 +312,10 @@ int run_greens(const GreensOptions& options) {
     h5.write("time_domain/green", green, "m/(N*s)",
              "displacement per unit impulse at x = 0, [time][distance], without the instantaneous (delta) part");
   }
-  if (modal_table) write_modal_table(staged.staging() / "modal_receptance.h5", *modal_table);
+  if (modal_table) {
+    write_modal_table(staged.staging() / "modal_receptance.h5", *modal_table);
+    plot_dispersion(staged.staging(), *modal_table);
+  }
   if (tyre) {
     write_greens_circumference(staged.staging(), *response, 512);
   } else {
