@@ -1,8 +1,8 @@
 #include "contact/rolling_tyre.hpp"
 
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -10,9 +10,9 @@
 
 #include "contact/direct_history_engine.hpp"
 #include "contact/lcp_solver.hpp"
+#include "contact/modal_history_engine.hpp"
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
-#include "contact/modal_history_engine.hpp"
 #include "contact/static_contact.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
