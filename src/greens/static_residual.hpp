@@ -8,8 +8,10 @@
 // wavenumbers up to ~2π/(cell size). A table that stops at the grid's Nyquist order (or at the
 // model file's circumferential_modes, lateral_modes) misses a large part of the cell's own
 // compliance: the tread would look far stiffer under an asperity than it is. The missing modes
-// have their first resonance far above the band (the tread's Rayleigh wave at c_R·k, k beyond
-// the table), so their static compliance is what they add in band.
+// have their first resonance at the tread's Rayleigh wave, c_R·k, k beyond the table; well below
+// it their static compliance is what they add. (For the passenger tyre that is above 4.2 kHz
+// for the orders around, but from 2.3 kHz for the lateral half-waves under 7.2 mm: in the top
+// bands an approximation.)
 //
 // With the kept modes m ≤ M and n ≤ n_last, the residual between cells p and q (centres
 // x_p − x_q = Δx, y_p, y_q; length ℓ, width w) is
