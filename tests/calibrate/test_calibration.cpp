@@ -6,7 +6,6 @@
 // scaled or which quantity it was measured as; mass loading, a robust loss against outliers,
 // multistart determinism, identifiability warnings and bad settings are checked too.
 #include <gtest/gtest.h>
-#include <toml++/toml.h>
 
 #include <chrono>
 #include <cmath>
@@ -21,7 +20,6 @@
 #include "calibrate/greens_model_calibration.hpp"
 #include "calibrate/plate_calibration.hpp"
 #include "calibrate/sdof_calibration.hpp"
-#include "calibrate/surface_model_calibration.hpp"
 #include "calibrate/synthetic_frf.hpp"
 #include "core/error.hpp"
 
@@ -391,41 +389,6 @@ TEST(Calibration, PlateRecoversTensionBendingFoundationAndLossFromPointAndTransf
                            {"loss_factor", truth.loss_factor}},
                           "plate, point + transfer mobility, 5 % noise, 20-3000 Hz");
   EXPECT_TRUE(r.warnings.empty());
-  std::printf("    %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-}
-
-// The two-layer tyre through its surface receptance (issue 11: calibrate fits it through the
-// same interface as the plate). A reduced passenger file (24 orders × 3 lateral modes, valid to
-// c_s·M/L ≈ 410 Hz) makes synthetic point and transfer mobilities with 5 % noise from changed
-// tension, foundation and tread modulus; the fit from the file's values recovers them.
-TEST(Calibration, TwoLayerRecoversTensionFoundationAndTreadModulus) {
-  const auto started = std::chrono::steady_clock::now();
-  toml::table estimate = toml::parse_file(std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/passenger_205_55R16_two_layer.toml");
-  estimate.insert_or_assign("circumferential_modes", 24);
-  estimate.insert_or_assign("lateral_modes", 3);
-  toml::table truth = estimate;
-  truth.insert_or_assign("tension_x", 7.5e4);
-  truth.insert_or_assign("foundation_stiffness", 2.0e6);
-  truth.insert_or_assign("tread_youngs_modulus", 5.0e6);
-  const SurfaceModelCalibration truth_model(truth, "truth");
-  const SurfaceModelCalibration start(estimate, "estimate");
-  EXPECT_NEAR(start.highest_frequency_hz(), 410.0, 15.0);
-  NormalSource noise(11);
-  const auto f = linear_frequencies(30.0, 400.0, 10.0);
-  const FrfPoints point{{0.0, 0.09}, {0.0, 0.09}};
-  const FrfPoints transfer{{0.1, 0.09}, {0.0, 0.09}};
-  const std::vector<double> values = truth_model.file_values();
-  const std::vector<MeasuredFrf> data = {synthetic_frf(truth_model, values, point, f, 0.05, noise, 0.0, "point"),
-                                         synthetic_frf(truth_model, values, transfer, f, 0.05, noise, 0.0, "transfer")};
-  CalibrationSettings settings;
-  // Every receptance rebuilds the tyre and its 147 modal stiffnesses, and the derivatives are
-  // central differences: one start, few iterations, to keep the test to seconds.
-  settings.starts = 1;
-  settings.max_iterations = 25;
-  settings.free = {"tension_x", "foundation_stiffness", "tread_youngs_modulus"};
-  const CalibrationResult r = calibrate(start, data, settings);
-  expect_within_two_sigma(r, {{"tension_x", 7.5e4}, {"foundation_stiffness", 2.0e6}, {"tread_youngs_modulus", 5.0e6}},
-                          "two_layer, point + transfer mobility, 5 % noise, 30-400 Hz");
   std::printf("    %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
 }
 
