@@ -200,6 +200,27 @@ struct Line {
   Eigen::Index index = 0;
 };
 
+// The weak prior of a continuation's early stages: r = x − x_start (unit Jacobian), so that a
+// factor e in a log-scaled parameter costs ½.
+class StartPrior : public ceres::CostFunction {
+ public:
+  explicit StartPrior(std::vector<double> start) : start_(std::move(start)) {
+    set_num_residuals(static_cast<int>(start_.size()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(start_.size()));
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const std::size_t n = start_.size();
+    for (std::size_t j = 0; j < n; ++j) residuals[j] = parameters[0][j] - start_[j];
+    if (jacobians != nullptr && jacobians[0] != nullptr)
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) jacobians[0][i * n + j] = i == j ? 1.0 : 0.0;
+    return true;
+  }
+
+ private:
+  std::vector<double> start_;
+};
+
 // The Cauchy loss ρ(s) = a²·ln(1 + s/a²) and its slope ρ'(s) = 1/(1 + s/a²).
 double cauchy_slope(double s, double scale) { return 1.0 / (1.0 + s / (scale * scale)); }
 
@@ -225,6 +246,15 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
 
   std::vector<PreparedFrf> frfs;
   for (const MeasuredFrf& frf : data) frfs.push_back(prepare(model, frf, layout, lo, hi, band_text));
+
+  // Frequency continuation: the stages' tops, doubling from the first to the band's top.
+  std::vector<double> stage_tops;
+  const double first_stage = settings.first_stage_hz < 0.0 ? model.first_stage_hz() : settings.first_stage_hz;
+  if (!std::isfinite(first_stage)) throw InputError("--first-stage", "", "must be a frequency in Hz (0: none)");
+  // A stage adds a band worth fitting on its own only when the next top is well above it.
+  constexpr double least_step = 1.5;
+  for (double top = first_stage; top > lo && top * least_step < hi; top *= 2.0) stage_tops.push_back(top);
+  stage_tops.push_back(hi);
 
   std::vector<Line> lines;
   for (std::size_t f = 0; f < frfs.size(); ++f) {
@@ -258,9 +288,10 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
     Progress(const CalibrationSettings& settings, int start) : settings_(settings), start_(start) {}
     ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
       if (settings_.progress)
-        settings_.progress(start_, static_cast<int>(std::max(1, settings_.starts)), summary.iteration);
+        settings_.progress(start_, static_cast<int>(std::max(1, settings_.starts)), done + summary.iteration);
       return ceres::SOLVER_CONTINUE;
     }
+    int done = 0;  // iterations of the earlier stages: the count runs on through the stages
 
    private:
     const CalibrationSettings& settings_;
@@ -269,37 +300,51 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
 
   for (std::size_t s = 0; s < starts.size(); ++s) {
     std::vector<double> x = starts[s];
-    ceres::Problem problem(problem_options);
-    problem.AddParameterBlock(x.data(), static_cast<int>(unknowns));
-    for (const Line& line : lines) {
-      auto* loss = new ceres::ScaledLoss(new ceres::CauchyLoss(settings.loss_scale), line.weight, ceres::TAKE_OWNERSHIP);
-      problem.AddResidualBlock(line.residual.get(), loss, x.data());
-    }
-    for (std::size_t j = 0; j < unknowns; ++j) {
-      problem.SetParameterLowerBound(x.data(), static_cast<int>(j), lower[j]);
-      problem.SetParameterUpperBound(x.data(), static_cast<int>(j), upper[j]);
-    }
-    ceres::Solver::Options options;
-    options.minimizer_type = ceres::TRUST_REGION;
-    options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = settings.max_iterations;
-    options.function_tolerance = 1e-12;
-    options.gradient_tolerance = 1e-14;
-    options.parameter_tolerance = 1e-12;
-    options.num_threads = 1;  // deterministic, and the machine is shared
-    options.logging_type = ceres::SILENT;
-    options.minimizer_progress_to_stdout = false;
-    Progress progress(settings, static_cast<int>(s));
-    options.callbacks.push_back(&progress);
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &problem, &summary);
     StartOutcome outcome;
     outcome.start = starts[s];
-    outcome.cost = summary.termination_type == ceres::FAILURE ? std::numeric_limits<double>::infinity()
-                                                               : summary.final_cost;
-    outcome.iterations = static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-    outcome.termination = ceres::TerminationTypeToString(summary.termination_type);
+    Progress progress(settings, static_cast<int>(s));
+    for (std::size_t stage = 0; stage < stage_tops.size(); ++stage) {
+      const bool last = stage + 1 == stage_tops.size();
+      ceres::Problem problem(problem_options);
+      problem.AddParameterBlock(x.data(), static_cast<int>(unknowns));
+      std::size_t in_band = 0;
+      for (const Line& line : lines) {
+        if (!last && frfs[line.frf].out.frequency_hz[line.index] > stage_tops[stage]) continue;
+        auto* loss =
+            new ceres::ScaledLoss(new ceres::CauchyLoss(settings.loss_scale), line.weight, ceres::TAKE_OWNERSHIP);
+        problem.AddResidualBlock(line.residual.get(), loss, x.data());
+        ++in_band;
+      }
+      // A stage needs more lines than unknowns to say anything of its own.
+      if (!last && 2 * in_band <= unknowns) continue;
+      StartPrior prior(x);  // the problem does not own its cost functions
+      if (!last) problem.AddResidualBlock(&prior, nullptr, x.data());
+      for (std::size_t j = 0; j < unknowns; ++j) {
+        problem.SetParameterLowerBound(x.data(), static_cast<int>(j), lower[j]);
+        problem.SetParameterUpperBound(x.data(), static_cast<int>(j), upper[j]);
+      }
+      ceres::Solver::Options options;
+      options.minimizer_type = ceres::TRUST_REGION;
+      options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+      options.linear_solver_type = ceres::DENSE_QR;
+      options.max_num_iterations = settings.max_iterations;
+      // The stages before the last need only bring the start into the last one's basin.
+      options.function_tolerance = last ? model.function_tolerance() : std::max(model.function_tolerance(), 1e-6);
+      options.gradient_tolerance = 1e-14;
+      options.parameter_tolerance = 1e-12;
+      options.num_threads = 1;  // deterministic, and the machine is shared
+      options.logging_type = ceres::SILENT;
+      options.minimizer_progress_to_stdout = false;
+      options.callbacks.push_back(&progress);
+      ceres::Solver::Summary summary;
+      ceres::Solve(options, &problem, &summary);
+      outcome.iterations += static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+      progress.done += static_cast<int>(summary.iterations.size());
+      if (!last) continue;
+      outcome.cost = summary.termination_type == ceres::FAILURE ? std::numeric_limits<double>::infinity()
+                                                                 : summary.final_cost;
+      outcome.termination = ceres::TerminationTypeToString(summary.termination_type);
+    }
     if (outcome.cost < best_cost) {
       best_cost = outcome.cost;
       best = x;
@@ -311,6 +356,7 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
   if (best.empty())
     throw std::runtime_error("calibrate: no start reached a finite cost (the model could not be evaluated)");
   result.cost = best_cost;
+  result.stage_tops_hz = stage_tops;
 
   // Residuals and Jacobians at the optimum, without loss or weight.
   std::vector<Eigen::Vector2d> r(lines.size());
@@ -365,6 +411,7 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
     const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
     constexpr double min_reciprocal_condition = 1e-14;
     result.full_rank = eigenvalues.minCoeff() > min_reciprocal_condition * eigenvalues.maxCoeff();
+    result.singular_values = eigenvalues.reverse().cwiseMax(0.0).cwiseSqrt();  // A = (√V J)ᵀ(√V J)
     ceres::Covariance::Options options;
     options.algorithm_type = ceres::DENSE_SVD;
     options.min_reciprocal_condition_number = min_reciprocal_condition;

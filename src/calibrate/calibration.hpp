@@ -8,6 +8,15 @@
 //   above `loss_scale` (outliers, a bad line near an anti-resonance) weigh less;
 // - several starts: the model file's values, then seeded log-uniform draws within a factor of
 //   ten of them (within bounds); the lowest cost wins. Same data and seed, same result;
+// - frequency continuation (for models with many lightly damped modes, such as the two-layer
+//   tyre): a start far from the truth sees the model's resonances between the measured ones,
+//   where the phase of every line is off and the cost is a plateau with local minima (cycle
+//   skipping). Each start then fits the lines up to a first top, where the modes are few and
+//   the cost falls towards the truth, then up to twice that, and so on to the whole band, each
+//   stage from the last one's result. The stages before the last add a weak prior
+//   ½·Σ (x − x_start)² (a factor e in a parameter costs ½) that keeps the parameters their
+//   band does not determine (a belt's bending at the lowest modes) from wandering off; the
+//   last stage has none;
 // - uncertainty: Ceres' covariance of the weighted problem at the optimum, scaled by the
 //   residual variance found in the fit and corrected for the weights (the sandwich
 //   C·(Jᵀ V² J)·C with C = (Jᵀ V J)⁻¹ and V the weights), so that the standard errors hold for
@@ -36,7 +45,10 @@ struct CalibrationSettings {
   int starts = 8;
   std::uint64_t seed = 1;
   double loss_scale = 0.25;  // Cauchy scale of the log residual (0.25 ≈ 2 dB or 14°)
-  int max_iterations = 200;  // per start
+  int max_iterations = 200;  // per start and stage
+  // Frequency continuation: the top of the first stage in Hz; < 0: the model's choice
+  // (CalibrationModel::first_stage_hz()); 0: none, the whole band at once.
+  double first_stage_hz = -1.0;
   // Called after every iteration: (start, starts, iteration).
   std::function<void(int, int, int)> progress;
 };
@@ -66,9 +78,9 @@ struct FittedFrf {
 
 struct StartOutcome {
   std::vector<double> start;  // unknowns at the start
-  double cost = 0.0;
-  int iterations = 0;
-  std::string termination;
+  double cost = 0.0;          // of the last stage (the whole band)
+  int iterations = 0;         // over all stages
+  std::string termination;    // of the last stage
 };
 
 struct CalibrationResult {
@@ -80,8 +92,13 @@ struct CalibrationResult {
   Eigen::MatrixXd covariance;   // of the unknowns (log p, or p), in the order of `fitted`
   Eigen::MatrixXd correlation;  // from `covariance`
   bool full_rank = true;        // Ceres found the covariance well conditioned
+  // The conditioning: singular values (largest first) of the weighted Jacobian at the optimum,
+  // rows √(w·ρ') ∂r/∂x in the unknowns' units (log p): a direction with singular value s moves
+  // the weighted residual by s per unit of log p, so its standard error is about σ/s.
+  Eigen::VectorXd singular_values;
   double cost = 0.0;            // Ceres' final cost ½Σ w·ρ(|r|²) of the best start
-  int iterations = 0;           // of the best start
+  int iterations = 0;           // of the best start (all stages)
+  std::vector<double> stage_tops_hz;  // the frequency continuation's stages (the last: the band's top)
   int best_start = 0;
   std::vector<StartOutcome> starts;
   double residual_sigma = 0.0;    // estimated σ of one residual component (log units)

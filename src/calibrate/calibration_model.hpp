@@ -65,6 +65,15 @@ class CalibrationModel {
   // The highest frequency (Hz) at which the model is valid (the reach of its modal
   // truncation); +infinity when unlimited.
   virtual double highest_frequency_hz() const = 0;
+  // The top of the first band of a fit by frequency continuation (calibration.hpp), Hz; 0: the
+  // model's cost is smooth enough to fit the whole band at once (the default).
+  virtual double first_stage_hz() const { return 0.0; }
+  // The relative change of the cost below which a fit stops. It must lie above the rounding of
+  // the model's cost and the error of its derivatives, or the fit goes on stepping in that
+  // noise until its trust region collapses.
+  virtual double function_tolerance() const { return 1e-12; }
+  // The starts a fit makes when the user names none (`rollnoise calibrate` without --starts).
+  virtual int default_starts() const { return 8; }
 
   // The index of a parameter by name; -1 when the model has no such parameter.
   std::ptrdiff_t index_of(const std::string& name) const;

@@ -54,11 +54,21 @@ cd TwoLayerStack::inner_face_stiffness(double kx, double ky, cd omega) const {
   return foundation_ * foundation_modulus_.factor(omega) + tension_x_ * kx * kx + tension_y_ * ky * ky;
 }
 
+LayerStiffness TwoLayerStack::belt_stiffness(double kx, double ky, cd omega) const {
+  return layer_stiffness(belt_.stiffness, belt_modulus_.factor(omega), belt_.density, belt_.thickness, kx, ky, omega);
+}
+
+LayerStiffness TwoLayerStack::tread_stiffness(double kx, double ky, cd omega) const {
+  return layer_stiffness(tread_.stiffness, tread_modulus_.factor(omega), tread_.density, tread_.thickness, kx, ky,
+                         omega);
+}
+
 Eigen::Matrix3cd TwoLayerStack::surface_compliance(double kx, double ky, cd omega) const {
-  const LayerStiffness belt = layer_stiffness(belt_.stiffness, belt_modulus_.factor(omega), belt_.density,
-                                              belt_.thickness, kx, ky, omega);
-  const LayerStiffness tread = layer_stiffness(tread_.stiffness, tread_modulus_.factor(omega), tread_.density,
-                                               tread_.thickness, kx, ky, omega);
+  return surface_compliance(belt_stiffness(kx, ky, omega), tread_stiffness(kx, ky, omega), kx, ky, omega);
+}
+
+Eigen::Matrix3cd TwoLayerStack::surface_compliance(const LayerStiffness& belt, const LayerStiffness& tread, double kx,
+                                                   double ky, cd omega) const {
   const cd inner = inner_face_stiffness(kx, ky, omega);
   if (kx == 0.0 && ky == 0.0 && omega == 0.0) {
     // A free in-plane translation: only the normal problem, which decouples exactly at k = 0.

@@ -56,6 +56,14 @@ class TwoLayerStack {
   // The inner-face normal stiffness per area s_f·ψ_f(ω) + T_x k_x² + T_y k_y², N/m³.
   std::complex<double> inner_face_stiffness(double kx, double ky, std::complex<double> omega) const;
 
+  // The pieces of surface_compliance: each layer's dynamic stiffness at (k_x, k_y, ω), and Ĝ
+  // from them with this stack's inner face. A caller that varies one layer's parameters at a
+  // time (calibration's finite differences) reuses the other layer's stiffness.
+  LayerStiffness belt_stiffness(double kx, double ky, std::complex<double> omega) const;
+  LayerStiffness tread_stiffness(double kx, double ky, std::complex<double> omega) const;
+  Eigen::Matrix3cd surface_compliance(const LayerStiffness& belt, const LayerStiffness& tread, double kx, double ky,
+                                      std::complex<double> omega) const;
+
  private:
   ElasticLayer belt_;
   ElasticLayer tread_;

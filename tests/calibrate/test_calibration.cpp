@@ -21,7 +21,10 @@
 #include "calibrate/plate_calibration.hpp"
 #include "calibrate/sdof_calibration.hpp"
 #include "calibrate/synthetic_frf.hpp"
+#include "calibrate/two_layer_calibration.hpp"
+#include "core/case_file.hpp"
 #include "core/error.hpp"
+#include "greens/two_layer_factory.hpp"
 
 namespace rollnoise {
 namespace {
@@ -48,9 +51,9 @@ const FittedParameter& fitted(const CalibrationResult& r, const std::string& nam
   throw std::runtime_error("no fitted parameter " + name);
 }
 
-// Prints and checks |fitted − true| < 2σ for each named parameter.
+// Prints and checks |fitted − true| < 2σ (or `bound`·σ) for each named parameter.
 void expect_within_two_sigma(const CalibrationResult& r, const std::vector<std::pair<std::string, double>>& truth,
-                             const char* title) {
+                             const char* title, double bound = 2.0) {
   std::printf("  %s (cost %.4g, %d iterations, start %d of %zu, residual sigma %.4f)\n", title, r.cost, r.iterations,
               r.best_start + 1, r.starts.size(), r.residual_sigma);
   std::printf("    %-22s %12s %12s %12s %8s\n", "parameter", "true", "fitted", "std_error", "z");
@@ -58,7 +61,7 @@ void expect_within_two_sigma(const CalibrationResult& r, const std::vector<std::
     const FittedParameter& p = fitted(r, name);
     const double z = (p.value - value) / p.std_error;
     std::printf("    %-22s %12.5g %12.5g %12.3g %8.2f\n", name.c_str(), value, p.value, p.std_error, z);
-    EXPECT_LT(std::abs(z), 2.0) << name << ": fitted " << p.value << ", true " << value << ", std error "
+    EXPECT_LT(std::abs(z), bound) << name << ": fitted " << p.value << ", true " << value << ", std error "
                                 << p.std_error;
     EXPECT_GT(p.std_error, 0.0) << name;
   }
@@ -390,6 +393,71 @@ TEST(Calibration, PlateRecoversTensionBendingFoundationAndLossFromPointAndTransf
                           "plate, point + transfer mobility, 5 % noise, 20-3000 Hz");
   EXPECT_TRUE(r.warnings.empty());
   std::printf("    %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+}
+
+// The two-layer tyre (issue 11: calibrate fits it through the same interface as the plate).
+// Synthetic measurements from a passenger tyre whose nine default parameters are all off the
+// model file's values by 15–40 %: two point mobilities (belt centre and a quarter of the width,
+// which sees the even lateral modes the centre does not) and two transfer mobilities (0.1 m
+// around, 0.045 m across), 10 mm cells, 1/6-octave lines 25–400 Hz, 5 % complex noise. One
+// start from the file's values, by frequency continuation (25–170 Hz, then the whole band),
+// must recover every parameter within three of its standard errors (nine parameters: with two,
+// one of them would miss a third of the time), which the conditioning (the singular values
+// printed) keeps between 0.1 % and 7 %. Over ten noise seeds (README) the errors in standard
+// errors have an RMS of 0.86 (89 of 90 within two).
+TEST(Calibration, TwoLayerRecoversBeltTensionFoundationTreadAndLossFactors) {
+  const auto started = std::chrono::steady_clock::now();
+  const TwoLayerParameters estimate = read_two_layer_tyre(
+      CaseFile::load_model(std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/passenger_205_55R16_two_layer.toml")
+          .top());
+  TwoLayerParameters truth = estimate;
+  truth.belt.youngs_x = 3.6e9;           // file 3.0e9
+  truth.belt.youngs_y = 1.1e9;           // 1.3e9
+  truth.tension_x = 7.5e4;               // 6.0e4
+  truth.tension_y = 1.05e4;              // 9.0e3
+  truth.foundation_stiffness = 1.8e6;    // 1.5e6
+  truth.tread_youngs_modulus = 5.0e6;    // 4.0e6
+  truth.belt_loss_factor = 0.07;         // 0.05
+  truth.tread_loss_factor = 0.13;        // 0.1
+  truth.foundation_loss_factor = 0.06;   // 0.08
+  constexpr double band_top = 400.0;
+  const TwoLayerCalibration truth_model(truth, band_top);
+  const TwoLayerCalibration start(estimate, band_top);
+  std::vector<double> f;
+  for (double hz = 25.0; hz <= band_top * 1.0001; hz *= std::pow(2.0, 1.0 / 6.0)) f.push_back(hz);
+  NormalSource noise(17);
+  const std::vector<double> values = truth_model.file_values();
+  std::vector<MeasuredFrf> data;
+  for (const auto& [points, name] : {std::pair{FrfPoints{{0.0, 0.09}, {0.0, 0.09}}, "point, centre"},
+                                     {FrfPoints{{0.1, 0.09}, {0.0, 0.09}}, "transfer, 0.1 m around"},
+                                     {FrfPoints{{0.0, 0.045}, {0.0, 0.045}}, "point, quarter width"},
+                                     {FrfPoints{{0.0, 0.045}, {0.0, 0.09}}, "transfer, 0.045 m across"}})
+    data.push_back(synthetic_frf(truth_model, values, points, f, 0.05, noise, 0.0, name));
+  const double synthesis = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  CalibrationSettings settings;
+  settings.starts = 1;
+  const CalibrationResult r = calibrate(start, data, settings);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::printf("  two_layer: %zu kept modes + %zu tail nodes, %zu lines; data %.2f s, fit %.2f s\n", start.kept_modes(),
+              start.tail_nodes(), r.lines, synthesis, total - synthesis);
+  std::printf("    singular values of the weighted Jacobian:");
+  for (Eigen::Index i = 0; i < r.singular_values.size(); ++i) std::printf(" %.3g", r.singular_values[i]);
+  std::printf(" (condition number %.0f)\n", r.singular_values[0] / r.singular_values[r.singular_values.size() - 1]);
+  std::printf("    %-24s %12s %12s %12s\n", "parameter", "start", "true", "fitted");
+  for (const FittedParameter& p : r.fitted)
+    std::printf("    %-24s %12.5g %12.5g %12.5g  (%+.2f %%)\n", p.name.c_str(), p.initial,
+                values[static_cast<std::size_t>(start.index_of(p.name))], p.value,
+                100.0 * (p.value / values[static_cast<std::size_t>(start.index_of(p.name))] - 1.0));
+  std::vector<std::pair<std::string, double>> expected;
+  for (const std::string& name : start.default_free_parameters())
+    expected.emplace_back(name, values[static_cast<std::size_t>(start.index_of(name))]);
+  ASSERT_EQ(expected.size(), 9U);
+  expect_within_two_sigma(r, expected, "two_layer, 2 point + 2 transfer mobilities, 5 % noise, 25-400 Hz", 3.0);
+  EXPECT_EQ(r.stage_tops_hz.size(), 2U) << "frequency continuation: a first stage, then the whole band";
+  EXPECT_TRUE(r.full_rank);
+  EXPECT_TRUE(r.warnings.empty());
+  EXPECT_NEAR(r.residual_sigma, 0.05 / std::sqrt(2.0), 0.006);
+  for (const auto& p : r.fitted) EXPECT_LT(p.log_std_error, 0.1) << p.name << " is determined";
 }
 
 }  // namespace

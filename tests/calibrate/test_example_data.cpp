@@ -23,8 +23,11 @@
 #include "calibrate/plate_calibration.hpp"
 #include "calibrate/sdof_calibration.hpp"
 #include "calibrate/synthetic_frf.hpp"
+#include "calibrate/two_layer_calibration.hpp"
 #include "calibrate/uff_frf_writer.hpp"
+#include "core/case_file.hpp"
 #include "core/csv.hpp"
+#include "greens/two_layer_factory.hpp"
 
 namespace rollnoise {
 namespace {
@@ -91,6 +94,38 @@ std::vector<testing::UffFrfRecord> uff_records(const std::vector<MeasuredFrf>& f
   return records;
 }
 
+// The two-layer tyre's truth: models/tyres/passenger_205_55R16_two_layer.toml with its nine
+// default fitted parameters changed by 15–40 % (data/mobility/README.md).
+TwoLayerParameters two_layer_truth() {
+  TwoLayerParameters p = read_two_layer_tyre(
+      CaseFile::load_model(ROLLNOISE_SOURCE_DIR "/models/tyres/passenger_205_55R16_two_layer.toml").top());
+  p.belt.youngs_x = 3.6e9;
+  p.belt.youngs_y = 1.1e9;
+  p.tension_x = 7.5e4;
+  p.tension_y = 1.05e4;
+  p.foundation_stiffness = 1.8e6;
+  p.tread_youngs_modulus = 5.0e6;
+  p.belt_loss_factor = 0.07;
+  p.tread_loss_factor = 0.13;
+  p.foundation_loss_factor = 0.06;
+  return p;
+}
+
+// Its four FRFs on 10 mm cells of the tread: node 1 (0, 0.09) m, node 2 (0.1, 0.09) m, node 3
+// (0, 0.045) m; point 1/1, transfer 2/1, point 3/3, transfer 3/1.
+struct TwoLayerFrf {
+  std::int64_t response;
+  std::int64_t reference;
+  FrfPoints points;
+  const char* what;
+};
+const TwoLayerFrf two_layer_frfs[] = {
+    {1, 1, {{0.0, 0.09}, {0.0, 0.09}}, "point mobility at the belt centre"},
+    {2, 1, {{0.1, 0.09}, {0.0, 0.09}}, "transfer mobility 0.1 m around"},
+    {3, 3, {{0.0, 0.045}, {0.0, 0.045}}, "point mobility at a quarter of the width"},
+    {3, 1, {{0.0, 0.045}, {0.0, 0.09}}, "transfer mobility 0.045 m across"},
+};
+
 struct ExampleFile {
   std::string name;
   std::string text;
@@ -123,6 +158,34 @@ std::vector<ExampleFile> example_files() {
                    csv_text(frfs[1], "transfer mobility 0.1 m along the belt centre line: " + truth, false)});
   files.push_back({"tyre_frfs.uff", testing::uff58_text(uff_records(frfs, true), {false, true, true})});
   files.push_back({"tyre_frfs_58b.uff", testing::uff58_text(uff_records(frfs, false), {true, true, true})});
+  {
+    const TwoLayerCalibration two_layer(two_layer_truth(), 400.0);
+    NormalSource two_layer_noise(3);
+    std::vector<testing::UffFrfRecord> records;
+    for (const TwoLayerFrf& t : two_layer_frfs) {
+      const MeasuredFrf frf = synthetic_frf(two_layer, two_layer.file_values(), t.points,
+                                            linear_frequencies(20.0, 400.0, 5.0),
+                                            0.05, two_layer_noise);
+      if (t.response == 1 && t.reference == 1)
+        files.push_back({"two_layer_point_mobility.csv",
+                         csv_text(frf,
+                                  std::string(t.what) +
+                                      " of the two-layer passenger tyre (10 mm cells), see README.md; 5 % complex "
+                                      "noise (seed 3)",
+                                  false)});
+      testing::UffFrfRecord r;
+      r.description = "SYNTHETIC two-layer " + std::string(t.what) + " " + std::to_string(t.response) + ":+Z/" +
+                      std::to_string(t.reference) + ":+Z";
+      r.response_node = t.response;
+      r.reference_node = t.reference;
+      for (Eigen::Index k = 0; k < frf.size(); ++k) {
+        r.frequency_hz.push_back(frf.frequency_hz[k]);
+        r.values.push_back(frf.mobility[k]);
+      }
+      records.push_back(r);
+    }
+    files.push_back({"two_layer_frfs.uff", testing::uff58_text(records, {false, true, true})});
+  }
   return files;
 }
 
@@ -164,7 +227,8 @@ TEST(ExampleData, FilesInDataMobilityAreWhatTheGeneratorMakes) {
   // The README names the generating parameters.
   const std::string readme = read_bytes(data_dir / "README.md");
   for (const char* value : {"SYNTHETIC", "0.8 kg", "40 N·s/m", "800 N/m", "1.5e5 N/m", "5.2e4", "5.5", "2.7e6", "0.08",
-                            "5 %", "seed 1", "seed 2"})
+                            "5 %", "seed 1", "seed 2", "seed 3", "3.6e9", "1.1e9", "7.5e4", "1.05e4", "1.8e6",
+                            "5.0e6", "0.07", "0.13", "0.06"})
     EXPECT_NE(readme.find(value), std::string::npos) << "README.md does not mention " << value;
 }
 

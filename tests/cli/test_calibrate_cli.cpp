@@ -2,7 +2,7 @@
 // in a fresh folder per test, on the synthetic example measurements of data/mobility (whose true
 // parameters are known). It must write calibrated.toml (a model file `simulate` takes),
 // fit.csv, report.json and fit.png; recover the true parameters within two reported standard
-// errors from CSV and from UFF 58/58b; give the same result whatever the frequency unit; be
+// errors from CSV and from UFF 58/58b (the two-layer tyre's nine within three); give the same result whatever the frequency unit; be
 // deterministic; and refuse bad data with one message and exit status 2, leaving nothing.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -264,6 +264,62 @@ TEST(CalibrateCli, BadDataIsOneMessageAndExitStatusTwo) {
                    {(source_dir / "models" / "cases" / "larsson2000_sdof_sine.toml").string(), "--data",
                     data("sdof_point_mobility.csv")},
                    "larsson2000_sdof_sine.toml: tyre: calibrate takes a model file");
+}
+
+// The two-layer tyre (issue 11), as README's walkthrough runs it: four FRFs on 10 mm cells of
+// the tread from one UFF file, nine parameters 15–40 % off in the model file, one start by
+// frequency continuation. About 25 s on two shared cores.
+TEST(CalibrateCli, TwoLayerFromUffRecoversItsNineParameters) {
+  Workspace ws;
+  const auto started = std::chrono::steady_clock::now();
+  RunResult r = ws.run({"calibrate", model("passenger_205_55R16_two_layer.toml"), "--data", data("two_layer_frfs.uff"),
+                        "--node", "1=0,0.09", "--node", "2=0.1,0.09", "--node", "3=0,0.045", "--out", "cal"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  std::printf("  two_layer walkthrough: %.1f s\n",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  EXPECT_EQ(r.err, "") << "no notes or warnings for clean data off a terminal";
+  EXPECT_TRUE(contains(r.out, "conditioning: singular values of the weighted Jacobian")) << r.out;
+  const nlohmann::json report = read_json(ws.path("cal") / "report.json");
+  EXPECT_EQ(report["model"], "two_layer");
+  const std::vector<std::pair<std::string, double>> truth = {
+      {"belt_youngs_modulus_x", 3.6e9}, {"belt_youngs_modulus_y", 1.1e9}, {"tension_x", 7.5e4},
+      {"tension_y", 1.05e4},           {"foundation_stiffness", 1.8e6},  {"tread_youngs_modulus", 5.0e6},
+      {"belt_loss_factor", 0.07},      {"tread_loss_factor", 0.13},      {"foundation_loss_factor", 0.06}};
+  ASSERT_EQ(report["parameters"].size(), truth.size()) << "the nine default parameters";
+  for (const auto& [name, value] : truth) {
+    const double fitted = report["parameters"][name]["value"];
+    const double std_error = report["parameters"][name]["std_error"];
+    // Nine parameters: within three standard errors (two would miss one a third of the time).
+    EXPECT_LT(std::abs(fitted - value), 3.0 * std_error) << name << ": fitted " << fitted << " +- " << std_error;
+    EXPECT_LT(std_error / fitted, 0.05) << name;
+  }
+  EXPECT_TRUE(report["warnings"].empty()) << report["warnings"].dump();
+  EXPECT_EQ(report["settings"]["starts"], 1) << "two_layer's default: one start";
+  EXPECT_EQ(report["settings"]["stage_tops_hz"].size(), 2U) << "a first stage, then the whole band";
+  EXPECT_EQ(report["settings"]["model_valid_up_to_hz"], 400.0) << "the modes are chosen for the data's top";
+  EXPECT_EQ(report["conditioning"]["singular_values"].size(), 9U);
+  EXPECT_LT(report["conditioning"]["condition_number"].get<double>(), 1e3);
+  EXPECT_EQ(report["residual"]["lines"], 308);
+  // calibrated.toml is a two_layer model file with the fitted values: calibrating it again over
+  // the lowest band, with one parameter free, reads it and stays where it was.
+  const std::string calibrated = read_text(ws.path("cal") / "calibrated.toml");
+  EXPECT_TRUE(contains(calibrated, "model = \"two_layer\"")) << calibrated.substr(0, 2000);
+  r = ws.run({"calibrate", (ws.path("cal") / "calibrated.toml").string(), "--data", data("two_layer_frfs.uff"), "--node",
+              "1=0,0.09", "--node", "2=0.1,0.09", "--node", "3=0,0.045", "--fit", "tension_x", "--frequency-range",
+              "20:120", "--out", "again"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const nlohmann::json again = read_json(ws.path("again") / "report.json");
+  EXPECT_NEAR(again["parameters"]["tension_x"]["value"].get<double>() /
+                  report["parameters"]["tension_x"]["value"].get<double>(),
+              1.0, 0.01);
+  // A cell over the belt's edge, and a parameter the model does not fit.
+  expect_bad_input(ws, {model("passenger_205_55R16_two_layer.toml"), "--data", data("two_layer_point_mobility.csv"),
+                        "--response", "0,0.002", "--excitation", "0,0.002"},
+                   "two_layer_point_mobility.csv: positions: the response position y = 0.002 m: the 10 mm transducer "
+                   "cell centred there must lie on the belt, y from 0.005 to 0.175 m");
+  expect_bad_input(ws, {model("passenger_205_55R16_two_layer.toml"), "--data", data("two_layer_point_mobility.csv"),
+                        "--fit", "tension_x,tread_poisson_ratio"},
+                   "--fit: tread_poisson_ratio: is not a parameter of the two_layer model that calibrate can fit");
 }
 
 TEST(CalibrateCli, ProgressOnATerminalOnly) {

@@ -240,6 +240,16 @@ nlohmann::json report_json(const CalibrateOptions& options, const CalibrationMod
   }
   report["correlations"] = {{"parameters", names}, {"matrix", matrix}};
   report["covariance_full_rank"] = result.full_rank;
+  {
+    const Eigen::VectorXd& s = result.singular_values;
+    nlohmann::json values = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < s.size(); ++i) values.push_back(s[i]);
+    report["conditioning"] = {
+        {"singular_values", values},
+        {"condition_number", s.size() > 0 && s[s.size() - 1] > 0.0 ? nlohmann::json(s[0] / s[s.size() - 1])
+                                                                   : nlohmann::json()},
+        {"about", "singular values of the weighted Jacobian at the optimum, per unit of the unknowns (log p)"}};
+  }
   report["warnings"] = result.warnings;
   report["residual"] = {{"sigma", result.residual_sigma},
                         {"rms_log_magnitude", result.rms_log_magnitude},
@@ -279,7 +289,8 @@ nlohmann::json report_json(const CalibrateOptions& options, const CalibrationMod
                         {"loss", "cauchy"},
                         {"loss_scale", settings.loss_scale},
                         {"weighting", "each third-octave band of each FRF weighs the same"},
-                        {"model_valid_up_to_hz", number_or_null(model.highest_frequency_hz())}};
+                        {"model_valid_up_to_hz", number_or_null(model.highest_frequency_hz())},
+                        {"stage_tops_hz", result.stage_tops_hz}};
   report["rollnoise_version"] = ROLLNOISE_VERSION;
   report["wall_time_s"] = wall_time;
   return report;
@@ -322,8 +333,11 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--fit", options.fit,
                   "Parameters to fit, by model-file key (mass, damping, stiffness, contact_stiffness, coupling; "
                   "tension_x, tension_y, bending_x, bending_y, bending_xy, foundation_stiffness, loss_factor, "
-                  "mass_per_area; transducer_mass). Default: sdof all, plate tension_x, bending_x, "
-                  "foundation_stiffness, loss_factor")
+                  "mass_per_area; two_layer: belt_youngs_modulus_x/y/z, belt_shear_modulus_xy/xz/yz, belt_density, "
+                  "belt_loss_factor, tread_youngs_modulus, tread_density, tread_loss_factor, tension_x, tension_y, "
+                  "foundation_stiffness, foundation_loss_factor; transducer_mass). Default: sdof all, plate "
+                  "tension_x, bending_x, foundation_stiffness, loss_factor; two_layer belt_youngs_modulus_x/y, "
+                  "tension_x/y, foundation_stiffness, tread_youngs_modulus and the three loss factors")
       ->delimiter(',');
   cmd->add_option("--out", options.out,
                   "Output folder (default out/<model name>_calibrated); written atomically, an earlier rollnoise "
@@ -345,10 +359,18 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
                   "transducer_mass is fitted")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--frequency-range", options.frequency_range,
-                  "LO:HI in Hz: fit only these lines (within the model's valid range)");
-  cmd->add_option("--starts", options.starts, "Number of starting points (the model file's values, then seeded draws)")
+                  "LO:HI in Hz: fit only these lines (within the model's valid range; two_layer solves exactly "
+                  "the modes that resonate below 2 HI, HI 500 Hz by default, at most 2000 Hz)");
+  cmd->add_option("--starts", options.starts,
+                  "Number of starting points (the model file's values, then seeded draws within a factor of ten); "
+                  "default 8, for two_layer 1")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--seed", options.seed, "Seed of the starting points");
+  cmd->add_option("--first-stage", options.first_stage,
+                  "Frequency continuation: fit the lines up to this frequency (Hz) first, then up to twice it, and "
+                  "so on to the whole band, each stage from the last one's result (default: the model's choice, "
+                  "twice the lowest resonance for two_layer, none for the others; 0: the whole band at once)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--loss-scale", options.loss_scale,
                   "Scale of the Cauchy loss on the log residual: lines far beyond it (outliers) weigh less")
       ->check(CLI::PositiveNumber);
@@ -365,19 +387,27 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
 int run_calibrate(CalibrateOptions options) {
   const auto started = std::chrono::steady_clock::now();
   const CaseFile model_file = CaseFile::load_model(options.model);
-  const std::unique_ptr<CalibrationModel> model = make_calibration_model(model_file);
+  CalibrationSettings settings;
+  parse_frequency_range(options.frequency_range, settings);
+  // The two-layer tyre chooses the modes it solves exactly for the band's top.
+  std::unique_ptr<CalibrationModel> model = make_calibration_model(model_file, settings.max_frequency_hz);
 
   std::vector<std::string> notes;
   const std::vector<MeasuredFrf> data = read_data(options, notes);
   for (const std::string& note : notes) std::fprintf(stderr, "rollnoise: note: %s\n", note.c_str());
+  // Data that end below the band's top need no modes for above them.
+  double data_top = 0.0;
+  for (const MeasuredFrf& frf : data)
+    if (frf.size() > 0) data_top = std::max(data_top, frf.frequency_hz.maxCoeff());
+  if (data_top > settings.min_frequency_hz && data_top < model->highest_frequency_hz())
+    model = make_calibration_model(model_file, data_top);
 
-  CalibrationSettings settings;
   settings.free = options.fit;
   settings.transducer_mass = options.transducer_mass;
-  settings.starts = options.starts;
+  settings.starts = options.starts > 0 ? options.starts : model->default_starts();
   settings.seed = options.seed;
   settings.loss_scale = options.loss_scale;
-  parse_frequency_range(options.frequency_range, settings);
+  settings.first_stage_hz = options.first_stage;
   // Progress by starts; within a start, iteration i counts as i/(i + 10) of it (how many
   // iterations a start takes is not known ahead). ProgressReporter looks at every 256th count.
   constexpr std::size_t steps_per_start = 1000;
@@ -420,6 +450,11 @@ int run_calibrate(CalibrateOptions options) {
   for (const FittedParameter& p : result.fitted)
     std::printf("  %-22s %12.6g +- %-10.3g %s (file: %g)\n", p.name.c_str(), p.value, p.std_error, p.unit.c_str(),
                 p.initial);
+  if (result.singular_values.size() > 0) {
+    std::printf("  conditioning: singular values of the weighted Jacobian (per unit of log p)");
+    for (Eigen::Index i = 0; i < result.singular_values.size(); ++i) std::printf(" %.3g", result.singular_values[i]);
+    std::printf("\n");
+  }
   std::printf("rollnoise: wrote %s (calibrated.toml, fit.csv, report.json, fit.png)\n", out.string().c_str());
   return 0;
 }

@@ -23,9 +23,10 @@ struct CalibrateOptions {
   std::vector<std::string> nodes;       // "N=X,Y": positions of UFF nodes
   double transducer_mass = 0.0;
   std::string frequency_range;          // "LO:HI" in Hz
-  int starts = 8;
+  int starts = 0;  // 0: the model's choice (8; 1 for two_layer)
   std::uint64_t seed = 1;
   double loss_scale = 0.25;
+  double first_stage = -1.0;            // Hz; < 0: the model's choice, 0: no frequency continuation
   bool data_type_given = false;  // filled after parsing
 };
 
