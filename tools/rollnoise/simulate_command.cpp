@@ -27,9 +27,11 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "simulate",
       "Roll a tyre model over a road: contact forces and displacements at every time step.\n"
-      "Writes contact.csv, summary.json and plots (PNG with their gnuplot scripts). Tyre (plate)\n"
-      "cases also write contact.h5 and the sound at the CPX and SPB microphones: spectrum.csv,\n"
-      "levels in summary.json, sound_power.csv and <receiver>.wav (with spb_passby.wav).");
+      "Writes contact.csv, summary.json and plots (PNG with their gnuplot scripts). Tyre cases\n"
+      "(model plate, two_layer or tabulated) also write contact.h5 and the sound at the CPX and SPB\n"
+      "microphones: spectrum.csv, levels in summary.json, sound_power.csv and <receiver>.wav (with\n"
+      "spb_passby.wav). A two_layer tyre's modes are tabulated and fitted once and then cached\n"
+      "($ROLLNOISE_CACHE, else $XDG_CACHE_HOME/rollnoise or ~/.cache/rollnoise).");
   cmd->add_option("case", options.case_file, "Case file (TOML) with [tyre], [road], [rolling], [radiation], [output]")
       ->required();
   cmd->add_option("--out", options.out,
