@@ -14,6 +14,7 @@
 #include "greens/modal_table_cache.hpp"
 #include "greens/model_factory.hpp"
 #include "greens/plate_factory.hpp"
+#include "greens/sinc.hpp"
 #include "greens/tabulated_factory.hpp"
 #include "greens/two_layer_factory.hpp"
 #include "greens/two_layer_greens_functions.hpp"
@@ -21,8 +22,6 @@
 
 namespace rollnoise {
 namespace {
-
-double sinc(double z) { return std::abs(z) < 1e-8 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
 
 // The cell over which a force on a tread surface is spread and its response averaged: one of
 // the paper's contact grid, L/512 along the circumference and 7 mm across.

@@ -7,11 +7,9 @@
 #include <stdexcept>
 #include <thread>
 
-namespace rollnoise {
+#include "greens/sinc.hpp"
 
-namespace {
-double sinc(double z) { return std::abs(z) < 1e-8 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
-}  // namespace
+namespace rollnoise {
 
 VectorFittingOptions tyre_mode_fit_options() {
   VectorFittingOptions options;

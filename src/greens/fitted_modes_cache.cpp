@@ -1,6 +1,5 @@
 #include "greens/fitted_modes_cache.hpp"
 
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -9,6 +8,8 @@
 #include <system_error>
 
 #include <unistd.h>
+
+#include "core/fnv_digest.hpp"
 
 namespace rollnoise {
 
@@ -22,12 +23,9 @@ constexpr std::size_t magic_size = 8;
 constexpr std::uint64_t max_poles = 4096;
 
 std::uint64_t fnv1a(const char* data, std::size_t n) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (std::size_t i = 0; i < n; ++i) {
-    hash ^= static_cast<unsigned char>(data[i]);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
+  FnvDigest d;
+  d.bytes(data, n);
+  return d.value();
 }
 
 void put(std::string& out, const void* data, std::size_t n) { out.append(static_cast<const char*>(data), n); }
@@ -62,18 +60,14 @@ fs::path file_of(const fs::path& directory, const std::string& key) {
 }  // namespace
 
 std::string fitted_modes_key(const std::string& table_key, const VectorFittingOptions& o) {
-  std::string fields;
+  FnvDigest d;
   for (const double v : {static_cast<double>(o.starting_pole_pairs), static_cast<double>(o.real_poles),
                          static_cast<double>(o.maximum_pole_pairs), static_cast<double>(o.iterations),
                          o.target_rms_error, o.target_max_error, static_cast<double>(o.weighting == FitWeighting::relative),
                          static_cast<double>(o.spacing == StartingPoleSpacing::logarithmic),
                          static_cast<double>(o.fit_direct)})
-    put_double(fields, v);
-  static constexpr char digits[] = "0123456789abcdef";
-  const std::uint64_t hash = fnv1a(fields.data(), fields.size());
-  std::string hex(16, '0');
-  for (int i = 0; i < 16; ++i) hex[static_cast<std::size_t>(15 - i)] = digits[(hash >> (4 * i)) & 0xf];
-  return table_key + "-fit-" + hex;
+    d.real(v);
+  return table_key + "-fit-" + d.hex();
 }
 
 std::optional<std::vector<PoleResidueResponse>> load_cached_fits(const fs::path& directory, const std::string& key,
@@ -153,22 +147,18 @@ void store_cached_fits(const fs::path& directory, const std::string& key, const 
 }
 
 std::string modal_table_content_key(const ModalReceptanceTable& t) {
-  std::string bytes;
+  FnvDigest d;
   for (const double v : {t.radius, t.width, t.lateral_shape == LateralShape::sine ? 0.0 : 1.0,
                          static_cast<double>(t.first_lateral_order), static_cast<double>(t.lateral_orders),
                          static_cast<double>(t.orders), static_cast<double>(t.frequency.size())})
-    put_double(bytes, v);
-  for (Eigen::Index k = 0; k < t.frequency.size(); ++k) put_double(bytes, t.frequency(k));
+    d.real(v);
+  for (Eigen::Index k = 0; k < t.frequency.size(); ++k) d.real(t.frequency(k));
   for (const auto& mode : t.modes)
     for (Eigen::Index k = 0; k < mode.size(); ++k) {
-      put_double(bytes, mode(k).real());
-      put_double(bytes, mode(k).imag());
+      d.real(mode(k).real());
+      d.real(mode(k).imag());
     }
-  static constexpr char digits[] = "0123456789abcdef";
-  const std::uint64_t hash = fnv1a(bytes.data(), bytes.size());
-  std::string hex(16, '0');
-  for (int i = 0; i < 16; ++i) hex[static_cast<std::size_t>(15 - i)] = digits[(hash >> (4 * i)) & 0xf];
-  return "table-" + hex;
+  return "table-" + d.hex();
 }
 
 FittedModalTyre fit_with_cache(ModalReceptanceTable table, std::string name,

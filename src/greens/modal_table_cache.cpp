@@ -10,6 +10,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/fnv_digest.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "greens/two_layer_tyre.hpp"
 
@@ -26,34 +27,6 @@ constexpr int two_layer_revision = 1;
 static_assert(sizeof(OrthotropicConstants) == 9 * sizeof(double));
 static_assert(sizeof(TwoLayerParameters) == 25 * sizeof(double) + 4 * sizeof(int),
               "TwoLayerParameters changed: add the new member to the digest of two_layer_table_key");
-
-// FNV-1a, 64 bits, over a byte sequence that does not depend on the machine's byte order.
-class Digest {
- public:
-  void byte(unsigned char b) {
-    hash_ ^= b;
-    hash_ *= 0x100000001b3ULL;
-  }
-  void unsigned_integer(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) byte(static_cast<unsigned char>(v >> (8 * i)));
-  }
-  void integer(std::int64_t v) { unsigned_integer(static_cast<std::uint64_t>(v)); }
-  void real(double v) { unsigned_integer(std::bit_cast<std::uint64_t>(v)); }
-  // Length first, so that consecutive strings cannot run into each other.
-  void text(std::string_view s) {
-    unsigned_integer(s.size());
-    for (const char c : s) byte(static_cast<unsigned char>(c));
-  }
-  std::string hex() const {
-    static constexpr char digits[] = "0123456789abcdef";
-    std::string out(16, '0');
-    for (int i = 0; i < 16; ++i) out[static_cast<std::size_t>(15 - i)] = digits[(hash_ >> (4 * i)) & 0xf];
-    return out;
-  }
-
- private:
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
 
 struct Sample {
   int m, n;
@@ -73,7 +46,7 @@ std::string key_of(const TwoLayerTyre& tyre, int orders, const Eigen::VectorXd& 
   if (orders < 0) throw std::invalid_argument("two_layer_table_key: orders must be >= 0");
   if (frequency_hz.size() == 0) throw std::invalid_argument("two_layer_table_key: no frequencies");
   const TwoLayerParameters& p = tyre.parameters();
-  Digest d;
+  FnvDigest d;
   d.text(modal_table_layout);
   d.text("two_layer");
   d.integer(two_layer_revision);

@@ -5,11 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
-namespace rollnoise {
+#include "greens/sinc.hpp"
 
-namespace {
-double sinc(double z) { return std::abs(z) < 1e-8 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
-}  // namespace
+namespace rollnoise {
 
 Eigen::MatrixXd static_residual_compliance(const KeptModes& kept,
                                            const std::function<double(double kx, double ky)>& static_compliance,

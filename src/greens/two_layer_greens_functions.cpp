@@ -8,6 +8,7 @@
 
 #include "core/real_fft_batch.hpp"
 #include "greens/causal_modulus.hpp"
+#include "greens/sinc.hpp"
 
 namespace rollnoise {
 namespace {
@@ -15,7 +16,6 @@ namespace {
 using cd = std::complex<double>;
 using std::numbers::pi;
 
-double sinc(double x) { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
 
 // Modes per batch of transforms: one plan serves every batch.
 constexpr int batch_size = 64;

@@ -5,13 +5,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "greens/sinc.hpp"
+
 namespace rollnoise {
 namespace {
 
 using cd = std::complex<double>;
 using std::numbers::pi;
 
-double sinc(double x) { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument(message);

@@ -17,35 +17,16 @@
 #include "greens/fitted_modal_tyre.hpp"
 #include "greens/static_residual.hpp"
 #include "greens/two_layer_tyre.hpp"
-#include "road/road_surface.hpp"
+#include "greens/two_layer_test_support.hpp"
+#include "rolling_test_roads.hpp"
 
 namespace rollnoise {
 namespace {
 
 using std::numbers::pi;
 
-// The passenger file's values with few modes (tests/greens/two_layer_test_support.hpp's set).
-TwoLayerParameters small_two_layer() {
-  TwoLayerParameters p;
-  p.radius = 0.316;
-  p.width = 0.18;
-  p.belt = {3.0e9, 1.3e9, 3.0e7, 8.0e8, 1.0e7, 1.0e7, 0.3, 0.45, 0.45};
-  p.belt_thickness = 0.003;
-  p.belt_density = 2000.0;
-  p.belt_loss_factor = 0.05;
-  p.tread_thickness = 0.007;
-  p.tread_density = 1150.0;
-  p.tread_youngs_modulus = 4.0e6;
-  p.tread_poisson_ratio = 0.48;
-  p.tread_loss_factor = 0.1;
-  p.tension_x = 6.0e4;
-  p.tension_y = 9.0e3;
-  p.foundation_stiffness = 1.5e6;
-  p.foundation_loss_factor = 0.08;
-  p.circumferential_modes = 24;
-  p.lateral_modes = 5;
-  return p;
-}
+// The passenger file's values with few modes.
+TwoLayerParameters small_two_layer() { return test::tyre_like_two_layer(24, 5); }
 
 TyreGrid small_grid() {
   TyreGrid g;
@@ -115,20 +96,8 @@ TEST(RollingTwoLayer, FittedModesGiveTheTyresReceptanceBetweenCells) {
   }
 }
 
-class Bumps : public RoadSurface {
- public:
-  std::string type() const override { return "bumps"; }
-  double height(double x, double y) const override {
-    if (x < 0.0) return 0.0;
-    return 1.5e-3 * std::sin(2 * M_PI * x / 0.09) * std::sin(2 * M_PI * x / 0.31) * (1.0 + 4.0 * y);
-  }
-};
-
-class Flat : public RoadSurface {
- public:
-  std::string type() const override { return "flat"; }
-  double height(double, double) const override { return 0.0; }
-};
+using test::Bumps;
+using test::Flat;
 
 TEST(RollingTwoLayer, SmoothRoadKeepsTheSteadyStateUnderTheLoad) {
   const TyreGrid grid = small_grid();

@@ -11,7 +11,7 @@
 #include "contact/rolling_tyre.hpp"
 #include "greens/kropp_plate.hpp"
 #include "greens/tread_compliance.hpp"
-#include "road/road_surface.hpp"
+#include "rolling_test_roads.hpp"
 
 namespace rollnoise {
 namespace {
@@ -45,21 +45,8 @@ TyreGrid small_grid() {
   return g;
 }
 
-// Bumps that vary across the width too, so that lateral lines see different roads.
-class Bumps : public RoadSurface {
- public:
-  std::string type() const override { return "bumps"; }
-  double height(double x, double y) const override {
-    if (x < 0.0) return 0.0;
-    return 1.5e-3 * std::sin(2 * M_PI * x / 0.09) * std::sin(2 * M_PI * x / 0.31) * (1.0 + 4.0 * y);
-  }
-};
-
-class Flat : public RoadSurface {
- public:
-  std::string type() const override { return "flat"; }
-  double height(double, double) const override { return 0.0; }
-};
+using test::Bumps;
+using test::Flat;
 
 Eigen::MatrixXd tread(const TyreGrid& g) { return winkler_compliance(g.points(), g.dx(), g.dy(), 4e8); }
 

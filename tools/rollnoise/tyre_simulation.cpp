@@ -416,6 +416,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                          {"steps", steps},
                          {"static_load_N", settings.static_load},
                          {"history", to_string(settings.history)}};
+  bool budget_written = false;
   if (sound.enabled) {
     std::unique_ptr<TyreBudget> budget;
     // The budget's independent estimates are the plate's (point mobility, patch receptance).
@@ -432,6 +433,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                                                         budget_bands(1.0 / dt, sound.radiation.max_frequency_hz),
                                                         contact_stiffness));
     }
+    budget_written = budget != nullptr;
     const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, tread_velocity, 1.0 / dt, settings.speed,
                                                   fs::path(file.path()).filename().string(), plots, budget.get());
     for (const auto& [key, value] : heard.items()) summary[key] = value;
@@ -446,7 +448,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   staged.commit();
   std::string written = "contact.csv, contact.h5, summary.json";
   if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
-  if (fs::exists(out / "budget.csv")) written += ", budget.csv";  // the plate's estimates only
+  if (budget_written) written += ", budget.csv";  // the plate's estimates only
   if (sound.enabled && sound.wav) written += ", WAV files";
   std::printf("rollnoise: wrote %s (%s%s)\n", out.string().c_str(), written.c_str(), plots ? " and plots" : "");
   return 0;
