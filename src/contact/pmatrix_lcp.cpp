@@ -3,50 +3,47 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/LU>
 
 namespace rollnoise {
+namespace {
 
-PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
-                                   const std::vector<char>* start) {
+// Block principal pivoting from the basic set in result.basic. solve_basic(basic, active, z,
+// fresh) puts M_AA⁻¹(−q_A) on the basic indices A of z and zeros elsewhere; `fresh` asks it not
+// to reuse factors, when the last solution left a residual beyond round-off on A.
+template <class SolveBasic>
+void pivot(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, std::vector<Eigen::Index>& active,
+           PMatrixLcpResult& result, SolveBasic&& solve_basic) {
   const Eigen::Index n = q.size();
-  if (m.rows() != n || m.cols() != n) throw std::invalid_argument("P-matrix LCP: sizes differ");
-  PMatrixLcpResult result{Eigen::VectorXd::Zero(n), q, 0, {}};
-  // Start from the guess, or from the points that penetrate with no force.
-  std::vector<char> basic(static_cast<std::size_t>(n), 0);
-  if (start && static_cast<Eigen::Index>(start->size()) == n) basic = *start;
-  else
-    for (Eigen::Index i = 0; i < n; ++i) basic[i] = q(i) < 0.0;
-  const double tolerance = 1e-13 * (q.cwiseAbs().maxCoeff() + 1e-300);
+  std::vector<char>& basic = result.basic;
+  const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
+  const double tolerance = 1e-13 * scale;
   Eigen::Index best = n + 1;
   int backups = 10;
   const int max_iterations = static_cast<int>(10 * n + 100);
-  std::vector<Eigen::Index> active;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
     active.clear();
     for (Eigen::Index i = 0; i < n; ++i)
-      if (basic[i]) active.push_back(i);
-    const auto p = static_cast<Eigen::Index>(active.size());
-    result.z.setZero();
-    if (p > 0) {
-      Eigen::MatrixXd block(p, p);
-      Eigen::VectorXd rhs(p);
-      for (Eigen::Index a = 0; a < p; ++a) {
-        rhs(a) = -q(active[a]);
-        for (Eigen::Index b = 0; b < p; ++b) block(a, b) = m(active[a], active[b]);
-      }
-      const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
-      for (Eigen::Index a = 0; a < p; ++a) result.z(active[a]) = za(a);
+      if (basic[static_cast<std::size_t>(i)]) active.push_back(i);
+    // w = M·z + q from the basic columns alone (z is zero elsewhere). A residual on the basic
+    // set beyond round-off means the factors in solve_basic went stale: solve once more, fresh.
+    for (const bool fresh : {false, true}) {
+      solve_basic(basic, active, result.z, fresh);
+      result.w = q;
+      for (const Eigen::Index a : active) result.w.noalias() += m.col(a) * result.z(a);
+      double residual = 0.0;
+      for (const Eigen::Index a : active) residual = std::max(residual, std::abs(result.w(a)));
+      if (residual <= 1e-9 * scale) break;
     }
-    result.w = m * result.z + q;
-    for (const Eigen::Index i : active) result.w(i) = 0.0;  // zero by construction
+    for (const Eigen::Index a : active) result.w(a) = 0.0;  // zero by construction
     // Infeasible indices: negative z among the basic ones, negative w among the others.
     Eigen::Index infeasible = 0;
     Eigen::Index last = -1;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const bool bad = basic[i] ? result.z(i) < -tolerance : result.w(i) < -tolerance;
+      const bool bad = basic[static_cast<std::size_t>(i)] ? result.z(i) < -tolerance : result.w(i) < -tolerance;
       if (bad) {
         ++infeasible;
         last = i;
@@ -55,8 +52,7 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
     result.iterations = iteration;
     if (infeasible == 0) {
       result.z = result.z.cwiseMax(0.0);
-      result.basic = basic;
-      return result;
+      return;
     }
     if (infeasible < best || backups > 0) {
       if (infeasible < best) {
@@ -66,14 +62,98 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
         --backups;
       }
       for (Eigen::Index i = 0; i < n; ++i) {
-        if (basic[i] ? result.z(i) < -tolerance : result.w(i) < -tolerance) basic[i] = !basic[i];
+        char& flag = basic[static_cast<std::size_t>(i)];
+        if (flag ? result.z(i) < -tolerance : result.w(i) < -tolerance) flag = !flag;
       }
     } else {
-      basic[last] = !basic[last];  // Murty's rule, on the largest infeasible index
+      basic[static_cast<std::size_t>(last)] = !basic[static_cast<std::size_t>(last)];  // Murty's rule, on the largest infeasible index
     }
   }
   throw std::runtime_error("P-matrix LCP did not converge in " + std::to_string(max_iterations) +
                            " iterations (n = " + std::to_string(n) + "): is the matrix a P-matrix?");
+}
+
+std::vector<char> penetrating(const Eigen::VectorXd& q) {
+  std::vector<char> basic(static_cast<std::size_t>(q.size()), 0);
+  for (Eigen::Index i = 0; i < q.size(); ++i) basic[static_cast<std::size_t>(i)] = q(i) < 0.0;
+  return basic;
+}
+
+}  // namespace
+
+PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                                   const std::vector<char>* start) {
+  const Eigen::Index n = q.size();
+  if (m.rows() != n || m.cols() != n) throw std::invalid_argument("P-matrix LCP: sizes differ");
+  // Start from the guess, or from the points that penetrate with no force.
+  PMatrixLcpResult result{Eigen::VectorXd::Zero(n), q, 0, {}};
+  result.basic = start && static_cast<Eigen::Index>(start->size()) == n ? *start : penetrating(q);
+  std::vector<Eigen::Index> active;
+  pivot(m, q, active, result,
+        [&m, &q](const std::vector<char>&, const std::vector<Eigen::Index>& set, Eigen::VectorXd& z, bool) {
+          const auto p = static_cast<Eigen::Index>(set.size());
+          z.setZero();
+          if (p == 0) return;
+          Eigen::MatrixXd block(p, p);
+          Eigen::VectorXd rhs(p);
+          for (Eigen::Index a = 0; a < p; ++a) {
+            rhs(a) = -q(set[a]);
+            for (Eigen::Index b = 0; b < p; ++b) block(a, b) = m(set[a], set[b]);
+          }
+          const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
+          for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
+        });
+  return result;
+}
+
+PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity)
+    : m_(std::make_shared<const Eigen::MatrixXd>(std::move(m))), factor_(m_, capacity) {
+  const Eigen::Index n = m_->rows();
+  result_.z = Eigen::VectorXd::Zero(n);
+  result_.w.resize(n);
+  shifted_.resize(static_cast<std::size_t>(n));
+  active_.reserve(static_cast<std::size_t>(n));
+}
+
+void PMatrixLcpSolver::warm_start(const std::vector<char>& basic) {
+  if (static_cast<Eigen::Index>(basic.size()) != m_->rows()) throw std::invalid_argument("P-matrix LCP: one flag per index");
+  result_.basic = basic;
+}
+
+void PMatrixLcpSolver::relabel(const std::vector<Eigen::Index>& new_index, bool matrix_unchanged) {
+  if (static_cast<Eigen::Index>(new_index.size()) != m_->rows()) throw std::invalid_argument("P-matrix LCP: one new index per index");
+  if (result_.basic.empty()) return;
+  std::fill(shifted_.begin(), shifted_.end(), 0);
+  for (std::size_t i = 0; i < new_index.size(); ++i)
+    if (new_index[i] >= 0) shifted_[static_cast<std::size_t>(new_index[i])] = result_.basic[i];
+  std::swap(shifted_, result_.basic);
+  if (matrix_unchanged) factor_.relabel(new_index);
+  else factor_.invalidate();
+}
+
+const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
+  if (q.size() != m_->rows()) throw std::invalid_argument("P-matrix LCP: sizes differ");
+  if (result_.basic.empty()) result_.basic = penetrating(q);
+  pivot(*m_, q, active_, result_,
+        [this, &q](const std::vector<char>& basic, const std::vector<Eigen::Index>&, Eigen::VectorXd& z, bool fresh) {
+          if (fresh) factor_.invalidate();
+          factor_.solve(basic, q, z);
+        });
+  return result_;
+}
+
+bool matrix_unchanged_by(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& new_index, double tolerance) {
+  if (static_cast<Eigen::Index>(new_index.size()) != m.rows()) return false;
+  const double limit = tolerance * m.cwiseAbs().maxCoeff();
+  for (Eigen::Index b = 0; b < m.cols(); ++b) {
+    const Eigen::Index nb = new_index[static_cast<std::size_t>(b)];
+    if (nb < 0) continue;
+    for (Eigen::Index a = 0; a < m.rows(); ++a) {
+      const Eigen::Index na = new_index[static_cast<std::size_t>(a)];
+      if (na >= 0 && std::abs(m(na, nb) - m(a, b)) > limit) return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace rollnoise

@@ -242,9 +242,13 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   std::unique_ptr<NonlinearTreadContact> springs;
   if (nonlinear) springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
   else if (!whole_g0) lcp = std::make_unique<LcpSolver>(g0_symmetric);
-  PMatrixLcpResult whole;  // the last step's solution of the whole-G0 LCP
-  whole.basic.assign(static_cast<std::size_t>(points), 0);
-  for (Eigen::Index p = 0; p < points; ++p) whole.basic[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
+  std::unique_ptr<PMatrixLcpSolver> whole;
+  if (whole_g0) {
+    whole = std::make_unique<PMatrixLcpSolver>(g0);
+    std::vector<char> in_contact(static_cast<std::size_t>(points), 0);
+    for (Eigen::Index p = 0; p < points; ++p) in_contact[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
+    whole->warm_start(in_contact);
+  }
 
   TyreContactTrace trace;
   trace.engine = engine->name();
@@ -282,19 +286,39 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
       shift_back[static_cast<std::size_t>(p)] = p - 1;
     }
+  // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
+  // along the window keeps its factor; checked, not assumed.
+  const bool shift_invariant = matrix_unchanged_by(g0, shift_back);
+  std::vector<char> shifted(static_cast<std::size_t>(points), 0);
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
   const auto loop_started = std::chrono::steady_clock::now();
+  // Column i meets the road at step n at x = x(i) + V·n·Δt = x(0) + (i·p + n)·dx/p: the height
+  // that column i + 1 met p steps earlier. The filtered heights are kept by m = i·p + n in a ring
+  // of W·p per lateral row, so that a step reads the road once per row instead of once per point
+  // (the low-pass filter takes 25 road samples each).
+  const auto road_positions = static_cast<std::size_t>(grid.window) * static_cast<std::size_t>(substeps);
+  Eigen::MatrixXd road_ring(static_cast<Eigen::Index>(road_positions), grid.lateral);
+  const auto filtered_height = [&](std::size_t m, int j) {
+    const double x = grid.x(0) + static_cast<double>(m) * grid.dx() / substeps, y = grid.y(j) - 0.5 * grid.width;
+    double sum = 0.0;
+    for (std::size_t s = 0; s < road_filter.offsets.size(); ++s)
+      sum += road_filter.weights[s] * road.height(x + road_filter.offsets[s], y);
+    return sum;
+  };
+  for (int j = 0; j < grid.lateral; ++j)
+    for (std::size_t m = 0; m + 1 < road_positions; ++m)
+      road_ring(static_cast<Eigen::Index>(m), j) = filtered_height(m, j);
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
-    for (int j = 0; j < grid.lateral; ++j)
+    const std::size_t newest = road_positions - 1 + n;  // m = (W − 1)·p + n
+    for (int j = 0; j < grid.lateral; ++j) {
+      road_ring(static_cast<Eigen::Index>(newest % road_positions), j) = filtered_height(newest, j);
       for (int i = 0; i < grid.window; ++i) {
-        const double x = grid.x(i) + settings.speed * t, y = grid.y(j) - 0.5 * grid.width;
-        double sum = 0.0;
-        for (std::size_t s = 0; s < road_filter.offsets.size(); ++s)
-          sum += road_filter.weights[s] * road.height(x + road_filter.offsets[s], y);
-        r(i + static_cast<Eigen::Index>(grid.window) * j) = sum;
+        const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
+        r(i + static_cast<Eigen::Index>(grid.window) * j) = road_ring(static_cast<Eigen::Index>(m % road_positions), j);
       }
+    }
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
@@ -305,7 +329,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
     if (n > 0 && !springs) {
-      const std::vector<char>& last = lcp ? lcp->active_flags() : whole.basic;
+      const std::vector<char>& last = lcp ? lcp->active_flags() : whole->result().basic;
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -317,22 +341,30 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
         shift += shifted_in != penetrates;
       }
       if (shift < stay) {
-        if (lcp) {
+        if (whole) {
+          whole->relabel(shift_back, shift_invariant);
+        } else if (shift_invariant) {
           lcp->relabel_active_set(shift_back);
         } else {
-          std::vector<char> shifted(static_cast<std::size_t>(points), 0);
+          std::fill(shifted.begin(), shifted.end(), 0);
           for (Eigen::Index p = 0; p < points; ++p)
             if (const Eigen::Index to = shift_back[static_cast<std::size_t>(p)]; to >= 0)
               shifted[static_cast<std::size_t>(to)] = last[static_cast<std::size_t>(p)];
-          whole.basic = std::move(shifted);
+          lcp->warm_start(shifted);
         }
       }
     }
-    if (whole_g0) whole = solve_pmatrix_lcp(g0, q, &whole.basic);
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp ? lcp->solve(q) : whole.z;
-    deformation.noalias() = (whole_g0 ? g0 : g0_symmetric) * force;
-    deformation += u0;
-    if (springs) deformation += springs->compression();
+    clock = std::chrono::steady_clock::now();
+    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp ? lcp->solve(q) : whole->solve(q).z;
+    trace.lcp_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+    // u = G0·f + u⁰ = w − q + u⁰, with the gaps w = G0·f + q that the LCP solvers keep (zero in
+    // contact: the point lies on the road).
+    if (springs) {
+      deformation.noalias() = g0_symmetric * force;
+      deformation += u0 + springs->compression();
+    } else {
+      deformation = (lcp ? lcp->slack() : whole->result().w) - q + u0;
+    }
     position = h + deformation;
     position.array() -= steady.indentation;
 
@@ -366,13 +398,14 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     force_ring[ring] = force;
     deformation_ring[ring] = deformation;
     previous_force = force;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp ? lcp->iterations() : whole.iterations;
+    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp ? lcp->iterations() : whole->result().iterations;
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     if (progress) progress->update(n);
   }
   trace.step_loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count();
+  if (whole) trace.lcp_factorisations = whole->factorisations();
   if (progress) progress->finish();
   return trace;
 }

@@ -1,10 +1,11 @@
 #include "radiation/least_squares.hpp"
 
+#include "core/blas_threads.hpp"
+
 #include <cblas.h>
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -60,11 +61,6 @@ void apply_q(const Eigen::MatrixXcd& qr, const std::vector<Complex>& tau, const 
 }
 
 }  // namespace
-
-void use_single_threaded_blas() {
-  static std::once_flag once;
-  std::call_once(once, [] { openblas_set_num_threads(1); });
-}
 
 RegularisedLeastSquares::RegularisedLeastSquares(Eigen::MatrixXcd a, LeastSquaresMethod method)
     : a_(std::move(a)), method_(method) {

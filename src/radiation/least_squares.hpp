@@ -13,7 +13,7 @@
 // its weakest directions, far less in the field q makes; the tyre's meshes are at 1e6–1e9);
 // otherwise the Householder QR of [A; λI] (zgeqrf) is used, as before.
 //
-// Determinism: the BLAS runs single-threaded (use_single_threaded_blas; the radiation stage runs
+// Determinism: the BLAS runs single-threaded (core/blas_threads.hpp; the radiation stage runs
 // its anchors on threads of its own), so results do not depend on the number of threads.
 #include <complex>
 #include <vector>
@@ -21,9 +21,6 @@
 #include <Eigen/Core>
 
 namespace rollnoise {
-
-// Makes the BLAS single-threaded for this process (idempotent, thread-safe).
-void use_single_threaded_blas();
 
 // automatic: the normal equations when well conditioned, else the QR; qr: always the QR (the
 // reference, for tests and benchmarks); normal_equations: always them (unless the Cholesky fails).

@@ -1,0 +1,231 @@
+// The P-matrix LCP of the whole-G0 contact step (pmatrix_lcp.hpp) and the bordered LU that keeps
+// its factor across steps (bordered_lu.hpp). The dense-LU solve_pmatrix_lcp is checked against
+// enumeration of all basic sets; the persistent solver against it, step by step, on a rolling
+// sequence of a translation-invariant, non-symmetric matrix like the two-layer tyre's G0.
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+
+#include "contact/bordered_lu.hpp"
+#include "contact/pmatrix_lcp.hpp"
+
+namespace rollnoise {
+namespace {
+
+// A P-matrix: symmetric positive definite part plus a skew part of relative size `skew`.
+Eigen::MatrixXd random_p_matrix(Eigen::Index n, double skew, std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd b(n, n), k(n, n);
+  for (Eigen::Index i = 0; i < b.size(); ++i) b.data()[i] = normal(rng);
+  for (Eigen::Index i = 0; i < k.size(); ++i) k.data()[i] = normal(rng);
+  Eigen::MatrixXd m = b.transpose() * b / static_cast<double>(n);
+  m.diagonal().array() += 0.05;
+  m /= m.cwiseAbs().maxCoeff();
+  const Eigen::MatrixXd antisymmetric = 0.5 * (k - k.transpose());
+  return m + skew * antisymmetric / antisymmetric.cwiseAbs().maxCoeff();
+}
+
+Eigen::VectorXd random_vector(Eigen::Index n, std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd q(n);
+  for (Eigen::Index i = 0; i < n; ++i) q(i) = normal(rng);
+  return q;
+}
+
+// The KKT conditions, scaled by |q| and |M|·|z|.
+double kkt_violation(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const Eigen::VectorXd& z) {
+  const Eigen::VectorXd w = m * z + q;
+  const double scale = q.cwiseAbs().maxCoeff() + m.cwiseAbs().maxCoeff() * z.cwiseAbs().maxCoeff();
+  const double complementarity = (z.array() * w.array()).abs().maxCoeff() / std::max(1.0, z.cwiseAbs().maxCoeff());
+  return std::max({-z.minCoeff(), -w.minCoeff(), complementarity, 0.0}) / scale;
+}
+
+TEST(PMatrixLcp, AgreesWithEnumerationOfAllBasicSets) {
+  // A P-matrix LCP has exactly one solution: the one basic set whose z ≥ 0 with w ≥ 0 off it.
+  std::mt19937_64 rng(11);
+  const Eigen::Index n = 7;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::MatrixXd m = random_p_matrix(n, 0.4, rng);
+    const Eigen::VectorXd q = random_vector(n, rng);
+    Eigen::VectorXd expected;
+    int found = 0;
+    for (unsigned mask = 0; mask < (1u << n); ++mask) {
+      std::vector<Eigen::Index> set;
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (mask & (1u << i)) set.push_back(i);
+      Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+      if (!set.empty()) {
+        const auto p = static_cast<Eigen::Index>(set.size());
+        Eigen::MatrixXd block(p, p);
+        Eigen::VectorXd rhs(p);
+        for (Eigen::Index a = 0; a < p; ++a) {
+          rhs(a) = -q(set[a]);
+          for (Eigen::Index b = 0; b < p; ++b) block(a, b) = m(set[a], set[b]);
+        }
+        const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
+        for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
+      }
+      const Eigen::VectorXd w = m * z + q;
+      bool ok = true;
+      for (Eigen::Index i = 0; i < n; ++i) ok = ok && z(i) >= -1e-12 && w(i) >= -1e-12;
+      if (ok) {
+        expected = z;
+        ++found;
+      }
+    }
+    ASSERT_EQ(found, 1) << "trial " << trial;
+    EXPECT_LE((solve_pmatrix_lcp(m, q).z - expected).cwiseAbs().maxCoeff(), 1e-12) << "trial " << trial;
+    PMatrixLcpSolver solver(m, 3);
+    EXPECT_LE((solver.solve(q).z - expected).cwiseAbs().maxCoeff(), 1e-12) << "trial " << trial;
+  }
+}
+
+TEST(PMatrixLcp, SequenceOfNearbyProblemsMeetsKktAndMatchesTheReference) {
+  std::mt19937_64 rng(5);
+  const Eigen::Index n = 300;
+  const Eigen::MatrixXd m = random_p_matrix(n, 0.2, rng);
+  for (const Eigen::Index capacity : {Eigen::Index{0}, Eigen::Index{8}, Eigen::Index{64}}) {
+    PMatrixLcpSolver solver(m, capacity);
+    Eigen::VectorXd q = random_vector(n, rng);
+    for (int step = 0; step < 30; ++step) {
+      q += 0.05 * random_vector(n, rng);  // nearby problems: a few indices change state
+      const PMatrixLcpResult& fast = solver.solve(q);
+      const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
+      EXPECT_LE(kkt_violation(m, q, fast.z), 1e-10) << "capacity " << capacity << ", step " << step;
+      EXPECT_LE((fast.z - reference.z).cwiseAbs().maxCoeff(), 1e-10 * reference.z.cwiseAbs().maxCoeff())
+          << "capacity " << capacity << ", step " << step;
+      EXPECT_EQ(fast.basic, reference.basic);
+    }
+    if (capacity == 64) {
+      EXPECT_LT(solver.factorisations(), 30) << "the bordered updates were not used";
+    }
+  }
+}
+
+// A contact matrix on a W × L window that depends on x_a − x_b (and the two lateral rows), like
+// a rolling tyre's G0: decaying, with a lag along x that makes it non-symmetric.
+struct Window {
+  int length = 40, lateral = 6;
+  Eigen::Index points() const { return Eigen::Index{length} * lateral; }
+  Eigen::Index index(int i, int j) const { return i + Eigen::Index{length} * j; }
+};
+
+Eigen::MatrixXd rolling_matrix(const Window& w) {
+  Eigen::MatrixXd m(w.points(), w.points());
+  for (int ja = 0; ja < w.lateral; ++ja)
+    for (int ia = 0; ia < w.length; ++ia)
+      for (int jb = 0; jb < w.lateral; ++jb)
+        for (int ib = 0; ib < w.length; ++ib) {
+          const double dx = ia - ib, dy = ja - jb;
+          const double r = std::sqrt(dx * dx + dy * dy);
+          // Local compliance, a decaying coupling (a positive definite kernel), and a lag that
+          // leaves the symmetric part alone: the response trails the load (+x).
+          m(w.index(ia, ja), w.index(ib, jb)) = ((r == 0.0 ? 2.0 : 0.0) + std::exp(-r / 3.0)) * (1.0 + 0.15 * std::tanh(0.5 * dx));
+        }
+  return m;
+}
+
+std::vector<Eigen::Index> shift_back(const Window& w) {
+  std::vector<Eigen::Index> map(static_cast<std::size_t>(w.points()), -1);
+  for (int j = 0; j < w.lateral; ++j)
+    for (int i = 1; i < w.length; ++i) map[static_cast<std::size_t>(w.index(i, j))] = w.index(i - 1, j);
+  return map;
+}
+
+TEST(PMatrixLcp, RollingSequenceWithShiftedFactorsMatchesTheReferenceStepByStep) {
+  const Window w;
+  const Eigen::MatrixXd m = rolling_matrix(w);
+  const std::vector<Eigen::Index> shift = shift_back(w);
+  ASSERT_TRUE(matrix_unchanged_by(m, shift));
+  // A parabolic tyre pressed into a road whose texture moves one cell towards −x per step.
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal;
+  std::vector<double> road(400);
+  for (double& r : road) r = 0.4 * normal(rng);
+  PMatrixLcpSolver solver(m, 48);
+  std::vector<char> reference_start;
+  const int steps = 120;
+  for (int step = 0; step < steps; ++step) {
+    Eigen::VectorXd q(w.points());
+    for (int j = 0; j < w.lateral; ++j)
+      for (int i = 0; i < w.length; ++i) {
+        const double x = i - 0.5 * w.length;
+        q(w.index(i, j)) = 0.02 * x * x - 6.0 - road[static_cast<std::size_t>(i + step) % road.size()] * (1 + j % 2);
+      }
+    if (step > 0) solver.relabel(shift, true);
+    const PMatrixLcpResult& fast = solver.solve(q);
+    const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
+    ASSERT_LE(kkt_violation(m, q, fast.z), 1e-10) << "step " << step;
+    ASSERT_LE((fast.z - reference.z).cwiseAbs().maxCoeff(), 1e-10 * reference.z.cwiseAbs().maxCoeff()) << "step " << step;
+    const long in_contact = std::count(fast.basic.begin(), fast.basic.end(), 1);
+    ASSERT_GT(in_contact, 10);
+    ASSERT_LT(in_contact, w.points() - 10);
+  }
+  EXPECT_LT(solver.factorisations(), steps / 2) << "the shifted factor was not kept";
+  // A matrix that is not translation invariant is recognised (its factor is then redone).
+  EXPECT_FALSE(matrix_unchanged_by(m + 1e-3 * Eigen::MatrixXd::Identity(w.points(), w.points()).rowwise().reverse(), shift));
+}
+
+TEST(BorderedLu, SolvesSetsNearTheBaseAsADenseLuDoes) {
+  std::mt19937_64 rng(8);
+  const Eigen::Index n = 120;
+  auto m = std::make_shared<const Eigen::MatrixXd>(random_p_matrix(n, 0.3, rng));
+  BorderedLu lu(m, 40);
+  std::uniform_int_distribution<Eigen::Index> pick(0, n - 1);
+  std::vector<char> set(static_cast<std::size_t>(n), 0);
+  for (Eigen::Index i = 0; i < n; i += 2) set[static_cast<std::size_t>(i)] = 1;
+  Eigen::VectorXd z;
+  for (int round = 0; round < 60; ++round) {
+    for (int flips = 0; flips < 3; ++flips) {
+      char& flag = set[static_cast<std::size_t>(pick(rng))];
+      flag = !flag;
+    }
+    const Eigen::VectorXd q = random_vector(n, rng);
+    lu.solve(set, q, z);
+    std::vector<Eigen::Index> active;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (set[static_cast<std::size_t>(i)]) active.push_back(i);
+    const auto p = static_cast<Eigen::Index>(active.size());
+    Eigen::MatrixXd block(p, p);
+    Eigen::VectorXd rhs(p);
+    for (Eigen::Index a = 0; a < p; ++a) {
+      rhs(a) = -q(active[a]);
+      for (Eigen::Index b = 0; b < p; ++b) block(a, b) = (*m)(active[a], active[b]);
+    }
+    const Eigen::VectorXd expected = block.partialPivLu().solve(rhs);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!set[static_cast<std::size_t>(i)]) {
+        ASSERT_EQ(z(i), 0.0);
+      }
+    for (Eigen::Index a = 0; a < p; ++a)
+      ASSERT_NEAR(z(active[a]), expected(a), 1e-10 * expected.cwiseAbs().maxCoeff()) << "round " << round;
+  }
+  // 180 flips in all, 40 at most kept: a few refactorisations, far fewer than solves.
+  EXPECT_GE(lu.factorisations(), 2);
+  EXPECT_LE(lu.factorisations(), 20);
+}
+
+TEST(BorderedLu, ABaseIndexThatLeavesTheWindowForcesAFreshFactor) {
+  const Window w{10, 2};
+  auto m = std::make_shared<const Eigen::MatrixXd>(rolling_matrix(w));
+  BorderedLu lu(m, 10);
+  std::vector<char> set(static_cast<std::size_t>(w.points()), 0);
+  set[static_cast<std::size_t>(w.index(0, 0))] = 1;  // leaves with the shift
+  set[static_cast<std::size_t>(w.index(5, 1))] = 1;
+  Eigen::VectorXd z;
+  lu.solve(set, Eigen::VectorXd::Constant(w.points(), -1.0), z);
+  EXPECT_EQ(lu.factorisations(), 1);
+  lu.relabel(shift_back(w));
+  std::vector<char> moved(set.size(), 0);
+  moved[static_cast<std::size_t>(w.index(4, 1))] = 1;
+  lu.solve(moved, Eigen::VectorXd::Constant(w.points(), -1.0), z);
+  EXPECT_EQ(lu.factorisations(), 2);
+  EXPECT_NEAR(z(w.index(4, 1)), 1.0 / (*m)(0, 0), 1e-14);
+}
+
+}  // namespace
+}  // namespace rollnoise
