@@ -9,7 +9,6 @@
 #include <Eigen/Cholesky>
 
 #include "contact/direct_history_engine.hpp"
-#include "contact/lcp_solver.hpp"
 #include "contact/modal_history_engine.hpp"
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
@@ -236,18 +235,19 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
   const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
   const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
-  // One of three per-step solvers: the exact symmetric LCP for linear treads, the P-matrix LCP
-  // for a strongly skewed G0, KINSOL for nonlinear treads.
-  std::unique_ptr<LcpSolver> lcp;
+  // The per-step solver: for a linear tread the LCP with G0's symmetric part S (the skew part
+  // lagged) or, for a strongly skewed G0, with the whole G0, both by block principal pivoting
+  // with a factor kept across steps (pmatrix_lcp.hpp; S is positive definite, G0 a P-matrix, so
+  // each has one solution); KINSOL for nonlinear treads.
+  std::unique_ptr<PMatrixLcpSolver> lcp;
   std::unique_ptr<NonlinearTreadContact> springs;
-  if (nonlinear) springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
-  else if (!whole_g0) lcp = std::make_unique<LcpSolver>(g0_symmetric);
-  std::unique_ptr<PMatrixLcpSolver> whole;
-  if (whole_g0) {
-    whole = std::make_unique<PMatrixLcpSolver>(g0);
+  if (nonlinear) {
+    springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  } else {
+    lcp = std::make_unique<PMatrixLcpSolver>(whole_g0 ? g0 : g0_symmetric);
     std::vector<char> in_contact(static_cast<std::size_t>(points), 0);
     for (Eigen::Index p = 0; p < points; ++p) in_contact[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
-    whole->warm_start(in_contact);
+    lcp->warm_start(in_contact);
   }
 
   TyreContactTrace trace;
@@ -289,7 +289,6 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
   // along the window keeps its factor; checked, not assumed.
   const bool shift_invariant = matrix_unchanged_by(g0, shift_back);
-  std::vector<char> shifted(static_cast<std::size_t>(points), 0);
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
   const auto loop_started = std::chrono::steady_clock::now();
@@ -329,7 +328,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
     if (n > 0 && !springs) {
-      const std::vector<char>& last = lcp ? lcp->active_flags() : whole->result().basic;
+      const std::vector<char>& last = lcp->result().basic;
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -340,22 +339,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
                                 last[static_cast<std::size_t>(ahead)] != 0;
         shift += shifted_in != penetrates;
       }
-      if (shift < stay) {
-        if (whole) {
-          whole->relabel(shift_back, shift_invariant);
-        } else if (shift_invariant) {
-          lcp->relabel_active_set(shift_back);
-        } else {
-          std::fill(shifted.begin(), shifted.end(), 0);
-          for (Eigen::Index p = 0; p < points; ++p)
-            if (const Eigen::Index to = shift_back[static_cast<std::size_t>(p)]; to >= 0)
-              shifted[static_cast<std::size_t>(to)] = last[static_cast<std::size_t>(p)];
-          lcp->warm_start(shifted);
-        }
-      }
+      if (shift < stay) lcp->relabel(shift_back, shift_invariant);
     }
     clock = std::chrono::steady_clock::now();
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp ? lcp->solve(q) : whole->solve(q).z;
+    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q).z;
     trace.lcp_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     // u = G0·f + u⁰ = w − q + u⁰, with the gaps w = G0·f + q that the LCP solvers keep (zero in
     // contact: the point lies on the road).
@@ -363,7 +350,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       deformation.noalias() = g0_symmetric * force;
       deformation += u0 + springs->compression();
     } else {
-      deformation = (lcp ? lcp->slack() : whole->result().w) - q + u0;
+      deformation = lcp->result().w - q + u0;
     }
     position = h + deformation;
     position.array() -= steady.indentation;
@@ -398,14 +385,14 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     force_ring[ring] = force;
     deformation_ring[ring] = deformation;
     previous_force = force;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp ? lcp->iterations() : whole->result().iterations;
+    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->result().iterations;
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     if (progress) progress->update(n);
   }
   trace.step_loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count();
-  if (whole) trace.lcp_factorisations = whole->factorisations();
+  if (lcp) trace.lcp_factorisations = lcp->factorisations();
   if (progress) progress->finish();
   return trace;
 }

@@ -68,7 +68,7 @@ struct TyreContactTrace {
   Eigen::VectorXd contact_length;  // m, extent along x of the points in contact
   Eigen::VectorXd contact_width;   // m, extent across
   Eigen::VectorXd input_power;     // W, power of the contact forces into the tyre, Σ F·u̇
-  std::vector<int> lcp_iterations;  // active-set changes per step
+  std::vector<int> lcp_iterations;  // pivoting iterations per step (KINSOL iterations for a nonlinear tread)
   // Largest entry of the skew part of G0 over the largest of G0.
   double contact_matrix_skewness = 0.0;
   // Whether that skew part was taken one step late (at the previous step's force; G0 skewed by
