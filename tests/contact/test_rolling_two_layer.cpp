@@ -6,7 +6,10 @@
 //   - Smooth road: the steady state holds (the whole-G0 P-matrix step keeps it to round-off).
 //   - Rough road: F ≥ 0, no penetration and complementarity at every step; the modal engine
 //     equals the direct one (the closed-form sheared kernel of the same poles).
+//   - The fit's error in a run: the production fit (relative RMS 3e-3 to 20 kHz) against a
+//     reference fitted over ten times tighter to 100 kHz (about 100 poles a mode).
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -42,10 +45,10 @@ TyreGrid small_grid() {
 struct FittedTwoLayer {
   TwoLayerTyre layers;
   FittedModalTyre modes;
-  explicit FittedTwoLayer(const TwoLayerParameters& p)
+  explicit FittedTwoLayer(const TwoLayerParameters& p, const Eigen::VectorXd& frequencies = tyre_mode_fit_frequencies(),
+                          const VectorFittingOptions& options = tyre_mode_fit_options())
       : layers(p),
-        modes(tabulate_two_layer(layers, tyre_mode_fit_frequencies(), p.circumferential_modes), "two_layer", true,
-              tyre_mode_fit_options()) {}
+        modes(tabulate_two_layer(layers, frequencies, p.circumferential_modes), "two_layer", true, options) {}
   Eigen::MatrixXd residual(const TyreGrid& grid) const {
     KeptModes kept{layers.circumference(), layers.width(), LateralShape::sine, 1, layers.parameters().lateral_modes,
                    layers.parameters().circumferential_modes};
@@ -130,6 +133,33 @@ TEST(RollingTwoLayer, RoughRoadContactConditionsAndEnginesAgree) {
   EXPECT_LE((modal.force - direct.force).cwiseAbs().maxCoeff(), 1e-9 * direct.force.cwiseAbs().maxCoeff());
   EXPECT_LE((modal.displacement - direct.displacement).cwiseAbs().maxCoeff(),
             1e-9 * direct.displacement.cwiseAbs().maxCoeff());
+}
+
+TEST(RollingTwoLayer, TheFitsErrorInARunStaysWithinItsTolerance) {
+  // Same tyre, same rough road, two fits: the production one and a reference with a target 30
+  // times tighter, sampled to 100 kHz (the tread's thickness resonances resolved).
+  VectorFittingOptions tight = tyre_mode_fit_options();
+  tight.target_rms_error = 1e-4;
+  tight.target_max_error = 2e-3;
+  tight.maximum_pole_pairs = 60;
+  const FittedTwoLayer reference(small_two_layer(), default_fit_frequencies(300, 1.0, 1.0e5), tight);
+  const ModalFitReport& fit = reference.modes.fit_report();
+  ASSERT_LE(fit.worst_rms_error, 2e-4);  // over 10 times the production fit's accuracy
+  std::printf("reference fit: %zu modes, %zu poles, %zu unconverged, worst relative RMS %.1e, max %.1e\n", fit.modes, fit.poles, fit.unconverged, fit.worst_rms_error, fit.worst_max_error);
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const Eigen::MatrixXd local = tyre().residual(grid);  // the static residual does not depend on the fit
+  TyreRunSettings settings{speed, 80 * grid.dx() / speed, 3200.0, HistoryKind::modal};
+  const TyreContactTrace production = simulate_rolling_tyre(RollingModes(tyre().modes, grid, grid.dx() / speed), local, Bumps(), settings);
+  const TyreContactTrace exact = simulate_rolling_tyre(RollingModes(reference.modes, grid, grid.dx() / speed), local, Bumps(), settings);
+  // Total force and the cell forces, relative to their largest values: within the fit's
+  // tolerance in the time domain (step means within 4.4e-3 of the peak, docs/greens/rolling_fit.md).
+  const double total = (production.total_force - exact.total_force).cwiseAbs().maxCoeff() / exact.total_force.maxCoeff();
+  const double cells = (production.force - exact.force).cwiseAbs().maxCoeff() / exact.force.maxCoeff();
+  EXPECT_LE(total, 5e-3);
+  EXPECT_LE(cells, 2e-2);
+  EXPECT_GT(total, 0.0);  // two different fits: the check compares something
+  std::printf("fit error in the run: total force %.2e, cell forces %.2e (of their largest values)\n", total, cells);
 }
 
 }  // namespace
