@@ -37,6 +37,8 @@ if grep -q '"mode_fit"' "$out/modal_1s/summary.json"; then
 fi
 echo "$(basename "$case" .toml), $(field modal_1s "['grid']['contact_points']") contact points, $(field modal_1s "['settings']['steps']") steps per simulated second"
 echo "modal, 1 s of rolling: step loop $(field modal_1s "['step_loop_time_s']") s, contact stage $(field modal_1s "['contact_time_s']") s, whole run with outputs $(field modal_1s "['wall_time_s']") s"
+loop_1s=$(field modal_1s "['step_loop_time_s']")
+echo "  of the step loop: contact problem (LCP) $(field modal_1s "['lcp_time_s']") s ($(python3 -c "print(round(100*$(field modal_1s "['lcp_time_s']")/$loop_1s))") %), history engine $(field modal_1s "['history_engine_time_s']") s ($(python3 -c "print(round(100*$(field modal_1s "['history_engine_time_s']")/$loop_1s))") %); $(python3 -c "print(round(1e3*$loop_1s/$(field modal_1s "['settings']['steps']"), 2))") ms per step"
 modal_history=$(python3 -c "print($(field modal_short "['history_engine_time_s']")/($steps_short+1))")
 direct_history=$(python3 -c "print($(field direct_short "['history_engine_time_s']")/($steps_short+1))")
 steps_1s=$(field modal_1s "['settings']['steps']")
@@ -47,4 +49,8 @@ echo "  history engine alone: modal ${modal_history} s, direct ${direct_history}
 echo "  whole step at the end of the shortened run: direct $(python3 -c "print(round($direct_step+$direct_history, 4))") s (its history cost doubled from the mean), modal ${modal_step} s: speed-up $(python3 -c "print(round(($direct_step+$direct_history)/$modal_step, 1))")x"
 # The direct engine's cost is linear in the history length (eq. 3): extrapolate to the last
 # step of 1 s of rolling, where its kernel would need $steps_1s lags (P² doubles each).
+# Per simulated second: the direct history's cost grows linearly with the step, so over the
+# steps of 1 s it sums to about half its last step's cost times the steps (the whole step adds
+# the same contact solve as the modal run's).
+echo "  per simulated second: modal (measured) ${loop_1s} s; direct (history extrapolated from the shortened run, plus the modal run's contact solve) $(python3 -c "print(round($direct_history*$steps_1s/$steps_short*$steps_1s + $loop_1s - $(field modal_1s "['history_engine_time_s']")))") s: $(python3 -c "print(round(($direct_history*$steps_1s/$steps_short*$steps_1s + $loop_1s - $(field modal_1s "['history_engine_time_s']"))/$loop_1s))")x"
 echo "  direct at the end of 1 s (history ${steps_1s} steps, extrapolated linearly): $(python3 -c "print(round($direct_history*2*$steps_1s/$steps_short, 2))") s per step, $(python3 -c "print(round($direct_history*2*$steps_1s/$steps_short/$modal_history))")x the modal engine; its kernel alone would take $(python3 -c "print(round($steps_1s*$(field modal_1s "['grid']['contact_points']")**2*8/1e9, 1))") GB"
