@@ -1,5 +1,6 @@
 #include "contact/rolling_tyre.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -267,6 +268,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   trace.contact_width.resize(rows);
   trace.input_power.resize(rows);
   trace.lcp_iterations.resize(samples);
+  trace.state_changes.assign(samples, 0);
+  trace.contact_matrix = measure_contact_matrix(whole_g0 || nonlinear ? g0 : g0_symmetric, grid, steady.force);
+  std::vector<char> warm(static_cast<std::size_t>(points), 0);
   trace.contact_matrix_skewness = skewness;
   trace.lagged_skew_growth = lag_growth;
   trace.skew_part_lagged = !whole_g0;
@@ -341,6 +345,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       }
       if (shift < stay) lcp->relabel(shift_back, shift_invariant);
     }
+    if (lcp) std::copy(lcp->result().basic.begin(), lcp->result().basic.end(), warm.begin());
     clock = std::chrono::steady_clock::now();
     const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q).z;
     trace.lcp_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
@@ -386,6 +391,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     deformation_ring[ring] = deformation;
     previous_force = force;
     trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->result().iterations;
+    if (lcp)
+      for (std::size_t p = 0; p < warm.size(); ++p) trace.state_changes[n] += warm[p] != lcp->result().basic[p];
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "contact/contact_matrix_structure.hpp"
 #include "contact/history_engine.hpp"
 #include "contact/rolling_modes.hpp"
 
@@ -69,6 +70,8 @@ struct TyreContactTrace {
   Eigen::VectorXd contact_width;   // m, extent across
   Eigen::VectorXd input_power;     // W, power of the contact forces into the tyre, Σ F·u̇
   std::vector<int> lcp_iterations;  // pivoting iterations per step (KINSOL iterations for a nonlinear tread)
+  std::vector<int> state_changes;   // points that changed state against the step's warm start (linear treads)
+  ContactMatrixStructure contact_matrix;  // of G0, measured on the steady contact
   // Largest entry of the skew part of G0 over the largest of G0.
   double contact_matrix_skewness = 0.0;
   // Whether that skew part was taken one step late (at the previous step's force; G0 skewed by

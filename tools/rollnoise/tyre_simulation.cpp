@@ -394,6 +394,15 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["indentation_m"] = trace.indentation;
   summary["history_engine"] = trace.engine;
   summary["lcp_iterations"] = summarise_iterations(trace.lcp_iterations);
+  summary["state_changes"] = summarise_iterations(trace.state_changes);
+  const ContactMatrixStructure& g0 = trace.contact_matrix;
+  summary["contact_matrix"] = {{"diagonal_dominance_min", g0.diagonal_dominance_min},
+                               {"diagonal_dominance_median", g0.diagonal_dominance_median},
+                               {"offsets_cells", g0.offsets},
+                               {"decay_x", g0.decay_x},
+                               {"decay_y", g0.decay_y},
+                               {"translation_variance", g0.translation_variance},
+                               {"skewness", g0.skewness}};
   summary["contact_matrix_skewness"] = trace.contact_matrix_skewness;
   summary["lagged_skew_growth"] = trace.lagged_skew_growth;
   summary["contact_step"] = trace.skew_part_lagged ? "symmetric LCP, G0's skew part one step late"
