@@ -1,5 +1,6 @@
 #include "contact/pmatrix_lcp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,11 +13,12 @@ namespace rollnoise {
 namespace {
 
 // Block principal pivoting from the basic set in result.basic. solve_basic(basic, active, z,
-// fresh) puts M_AA⁻¹(−q_A) on the basic indices A of z and zeros elsewhere; `fresh` asks it not
-// to reuse factors, when the last solution left a residual beyond round-off on A.
-template <class SolveBasic>
-void pivot(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, std::vector<Eigen::Index>& active,
-           PMatrixLcpResult& result, SolveBasic&& solve_basic) {
+// fresh) puts M_AA⁻¹(−q_A) on the basic indices A of z and zeros elsewhere (z holds the last
+// iterate on entry); `fresh` asks it not to reuse factors, when the last solution left a
+// residual beyond round-off on A. multiply(z, w) sets w = M·z.
+template <class SolveBasic, class Multiply>
+void pivot(const Eigen::VectorXd& q, std::vector<Eigen::Index>& active, PMatrixLcpResult& result,
+           SolveBasic&& solve_basic, Multiply&& multiply) {
   const Eigen::Index n = q.size();
   std::vector<char>& basic = result.basic;
   const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
@@ -28,12 +30,12 @@ void pivot(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, std::vector<Eigen
     active.clear();
     for (Eigen::Index i = 0; i < n; ++i)
       if (basic[static_cast<std::size_t>(i)]) active.push_back(i);
-    // w = M·z + q from the basic columns alone (z is zero elsewhere). A residual on the basic
-    // set beyond round-off means the factors in solve_basic went stale: solve once more, fresh.
+    // w = M·z + q (z is zero off the basic set). A residual on the basic set beyond round-off
+    // means the factors in solve_basic went stale: solve once more, fresh.
     for (const bool fresh : {false, true}) {
       solve_basic(basic, active, result.z, fresh);
-      result.w = q;
-      for (const Eigen::Index a : active) result.w.noalias() += m.col(a) * result.z(a);
+      multiply(result.z, active, result.w);
+      result.w += q;
       double residual = 0.0;
       for (const Eigen::Index a : active) residual = std::max(residual, std::abs(result.w(a)));
       if (residual <= 1e-9 * scale) break;
@@ -73,6 +75,29 @@ void pivot(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, std::vector<Eigen
                            " iterations (n = " + std::to_string(n) + "): is the matrix a P-matrix?");
 }
 
+// w = M·z from the columns of the basic set alone (z is zero elsewhere).
+void multiply_basic_columns(const Eigen::MatrixXd& m, const Eigen::VectorXd& z, const std::vector<Eigen::Index>& active,
+                            Eigen::VectorXd& w) {
+  w.setZero();
+  for (const Eigen::Index a : active) w.noalias() += m.col(a) * z(a);
+}
+
+// Gershgorin's bound on the condition number of D^{-1/2}·M·D^{-1/2} (D = diag M), or infinity
+// when the scaled matrix is not diagonally dominant.
+double scaled_condition_bound(const Eigen::MatrixXd& m) {
+  const Eigen::VectorXd d = m.diagonal();
+  if (d.minCoeff() <= 0.0) return INFINITY;
+  const Eigen::VectorXd root = d.cwiseSqrt().cwiseInverse();
+  double radius = 0.0;
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    double row = 0.0;
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (j != i) row += std::abs(m(i, j)) * root(j);
+    radius = std::max(radius, row * root(i));
+  }
+  return radius < 1.0 ? (1.0 + radius) / (1.0 - radius) : INFINITY;
+}
+
 std::vector<char> penetrating(const Eigen::VectorXd& q) {
   std::vector<char> basic(static_cast<std::size_t>(q.size()), 0);
   for (Eigen::Index i = 0; i < q.size(); ++i) basic[static_cast<std::size_t>(i)] = q(i) < 0.0;
@@ -89,7 +114,7 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
   PMatrixLcpResult result{Eigen::VectorXd::Zero(n), q, 0, {}};
   result.basic = start && static_cast<Eigen::Index>(start->size()) == n ? *start : penetrating(q);
   std::vector<Eigen::Index> active;
-  pivot(m, q, active, result,
+  pivot(q, active, result,
         [&m, &q](const std::vector<char>&, const std::vector<Eigen::Index>& set, Eigen::VectorXd& z, bool) {
           const auto p = static_cast<Eigen::Index>(set.size());
           z.setZero();
@@ -102,31 +127,53 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
           }
           const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
           for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
+        },
+        [&m](const Eigen::VectorXd& z, const std::vector<Eigen::Index>& set, Eigen::VectorXd& w) {
+          multiply_basic_columns(m, z, set, w);
         });
   return result;
 }
 
-PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity)
+PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity, std::optional<ContactWindow> window)
     : m_(std::make_shared<const Eigen::MatrixXd>(std::move(m))), factor_(m_, capacity) {
   const Eigen::Index n = m_->rows();
+  if (window) {
+    if (Eigen::Index{window->window} * window->lateral != n)
+      throw std::invalid_argument("P-matrix LCP: the window's points differ from the matrix's size");
+    product_ = std::make_unique<WindowConvolution>(*m_, window->window, window->lateral);
+    const bool symmetric = (*m_ - m_->transpose()).cwiseAbs().maxCoeff() <= 1e-14 * m_->cwiseAbs().maxCoeff();
+    iterative_ = symmetric && scaled_condition_bound(*m_) <= 25.0;
+  }
   result_.z = Eigen::VectorXd::Zero(n);
   result_.w.resize(n);
   shifted_.resize(static_cast<std::size_t>(n));
   active_.reserve(static_cast<std::size_t>(n));
+  last_z_ = Eigen::VectorXd::Zero(n);
+  shifted_z_ = last_z_;
+  inverse_diagonal_ = m_->diagonal().cwiseInverse();
+  mask_ = r_ = s_ = p_ = mp_ = last_z_;
 }
+
+PMatrixLcpSolver::~PMatrixLcpSolver() = default;
 
 void PMatrixLcpSolver::warm_start(const std::vector<char>& basic) {
   if (static_cast<Eigen::Index>(basic.size()) != m_->rows()) throw std::invalid_argument("P-matrix LCP: one flag per index");
   result_.basic = basic;
+  last_z_.setZero();
 }
 
 void PMatrixLcpSolver::relabel(const std::vector<Eigen::Index>& new_index, bool matrix_unchanged) {
   if (static_cast<Eigen::Index>(new_index.size()) != m_->rows()) throw std::invalid_argument("P-matrix LCP: one new index per index");
   if (result_.basic.empty()) return;
   std::fill(shifted_.begin(), shifted_.end(), 0);
+  shifted_z_.setZero();
   for (std::size_t i = 0; i < new_index.size(); ++i)
-    if (new_index[i] >= 0) shifted_[static_cast<std::size_t>(new_index[i])] = result_.basic[i];
+    if (const Eigen::Index to = new_index[i]; to >= 0) {
+      shifted_[static_cast<std::size_t>(to)] = result_.basic[i];
+      shifted_z_(to) = last_z_(static_cast<Eigen::Index>(i));
+    }
   std::swap(shifted_, result_.basic);
+  std::swap(shifted_z_, last_z_);
   if (matrix_unchanged) factor_.relabel(new_index);
   else factor_.invalidate();
 }
@@ -134,12 +181,49 @@ void PMatrixLcpSolver::relabel(const std::vector<Eigen::Index>& new_index, bool 
 const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
   if (q.size() != m_->rows()) throw std::invalid_argument("P-matrix LCP: sizes differ");
   if (result_.basic.empty()) result_.basic = penetrating(q);
-  pivot(*m_, q, active_, result_,
+  result_.z = last_z_;  // the warm start of the conjugate gradients
+  pivot(q, active_, result_,
         [this, &q](const std::vector<char>& basic, const std::vector<Eigen::Index>&, Eigen::VectorXd& z, bool fresh) {
+          if (iterative_ && !fresh && conjugate_gradients(basic, q, z)) return;
           if (fresh) factor_.invalidate();
           factor_.solve(basic, q, z);
+        },
+        [this](const Eigen::VectorXd& z, const std::vector<Eigen::Index>& active, Eigen::VectorXd& w) {
+          if (product_) product_->apply(z, w);
+          else multiply_basic_columns(*m_, z, active, w);
         });
+  last_z_ = result_.z;
   return result_;
+}
+
+bool PMatrixLcpSolver::conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z) {
+  // Jacobi-preconditioned CG on the basic block, the other indices masked out; the products by FFT.
+  const Eigen::Index n = q.size();
+  for (Eigen::Index i = 0; i < n; ++i) mask_(i) = basic[static_cast<std::size_t>(i)] ? 1.0 : 0.0;
+  z.array() *= mask_.array();
+  const double tolerance = 1e-13 * (q.cwiseAbs().maxCoeff() + 1e-300);
+  product_->apply(z, mp_);
+  r_ = (-q - mp_).cwiseProduct(mask_);
+  if (r_.cwiseAbs().maxCoeff() <= tolerance) return true;
+  s_ = r_.cwiseProduct(inverse_diagonal_);
+  p_ = s_;
+  double rs = r_.dot(s_);
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    product_->apply(p_, mp_);
+    mp_.array() *= mask_.array();
+    const double curvature = p_.dot(mp_);
+    if (!(curvature > 0.0)) return false;
+    const double alpha = rs / curvature;
+    z.noalias() += alpha * p_;
+    r_.noalias() -= alpha * mp_;
+    ++cg_iterations_;
+    if (r_.cwiseAbs().maxCoeff() <= tolerance) return true;
+    s_ = r_.cwiseProduct(inverse_diagonal_);
+    const double next = r_.dot(s_);
+    p_ = s_ + (next / rs) * p_;
+    rs = next;
+  }
+  return false;
 }
 
 bool matrix_unchanged_by(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& new_index, double tolerance) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <Eigen/Cholesky>
@@ -14,6 +15,7 @@
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
 #include "contact/static_contact.hpp"
+#include "contact/window_convolution.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "road/road_surface.hpp"
@@ -236,6 +238,23 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
   const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
   const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
+  // Window point (i, j) → (i − 1, j); the last column's points leave.
+  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 1; i < grid.window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+      shift_back[static_cast<std::size_t>(p)] = p - 1;
+    }
+  // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
+  // along the window keeps its factor, and products with it
+  // are convolutions along x; checked, not assumed.
+  const bool shift_invariant = matrix_unchanged_by(g0, shift_back);
+  // The lagged skew part acts through a convolution too (a dense product would stream G0 once
+  // more per step).
+  std::unique_ptr<WindowConvolution> skew_product;
+  if (shift_invariant && !whole_g0 && skewness > 0.0)
+    skew_product = std::make_unique<WindowConvolution>(g0_skew, grid.window, grid.lateral);
+  Eigen::VectorXd skew_displacement(points);
   // The per-step solver: for a linear tread the LCP with G0's symmetric part S (the skew part
   // lagged) or, for a strongly skewed G0, with the whole G0, both by block principal pivoting
   // with a factor kept across steps (pmatrix_lcp.hpp; S is positive definite, G0 a P-matrix, so
@@ -245,7 +264,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   if (nonlinear) {
     springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
   } else {
-    lcp = std::make_unique<PMatrixLcpSolver>(whole_g0 ? g0 : g0_symmetric);
+    std::optional<ContactWindow> window;
+    if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
+    lcp = std::make_unique<PMatrixLcpSolver>(whole_g0 ? g0 : g0_symmetric, 128, window);
     std::vector<char> in_contact(static_cast<std::size_t>(points), 0);
     for (Eigen::Index p = 0; p < points; ++p) in_contact[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
     lcp->warm_start(in_contact);
@@ -283,16 +304,6 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // starting in steady rolling.
   std::vector<Eigen::VectorXd> force_ring(static_cast<std::size_t>(substeps), steady.force);
   std::vector<Eigen::VectorXd> deformation_ring(static_cast<std::size_t>(substeps), steady.deformation);
-  // Window point (i, j) → (i − 1, j); the last column's points leave.
-  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
-  for (int j = 0; j < grid.lateral; ++j)
-    for (int i = 1; i < grid.window; ++i) {
-      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
-      shift_back[static_cast<std::size_t>(p)] = p - 1;
-    }
-  // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
-  // along the window keeps its factor; checked, not assumed.
-  const bool shift_invariant = matrix_unchanged_by(g0, shift_back);
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
   const auto loop_started = std::chrono::steady_clock::now();
@@ -325,7 +336,12 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     auto clock = std::chrono::steady_clock::now();
     engine->history(u0);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
-    if (!whole_g0) u0.noalias() += g0_skew * previous_force;
+    if (skew_product) {
+      skew_product->apply(previous_force, skew_displacement);
+      u0 += skew_displacement;
+    } else if (!whole_g0) {
+      u0.noalias() += g0_skew * previous_force;
+    }
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
     // The road moves one cell towards −x per cell of travel (every p steps), and the contacts
     // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
@@ -399,7 +415,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     if (progress) progress->update(n);
   }
   trace.step_loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count();
-  if (lcp) trace.lcp_factorisations = lcp->factorisations();
+  if (lcp) {
+    trace.lcp_factorisations = lcp->factorisations();
+    trace.lcp_cg_iterations = lcp->cg_iterations();
+  }
   if (progress) progress->finish();
   return trace;
 }

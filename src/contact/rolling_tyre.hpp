@@ -89,7 +89,8 @@ struct TyreContactTrace {
   double step_loop_seconds = 0.0;  // wall time of the time-step loop alone (no setup)
   double history_seconds = 0.0;    // of which in the history engine (u⁰ and the update)
   double lcp_seconds = 0.0;        // of which in the contact problem of each step (LCP or KINSOL)
-  long lcp_factorisations = -1;    // dense factorisations of the whole-G0 LCP (−1: another solver)
+  long lcp_factorisations = -1;    // dense factorisations of the LCP's basic block (−1: KINSOL)
+  long lcp_cg_iterations = 0;      // conjugate-gradient iterations (a well-conditioned symmetric step)
 };
 
 // The steady rolling state on a smooth road under load W: indentation and forces.

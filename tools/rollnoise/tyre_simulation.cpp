@@ -454,6 +454,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["history_engine_time_s"] = trace.history_seconds;
   summary["lcp_time_s"] = trace.lcp_seconds;
   if (trace.lcp_factorisations >= 0) summary["lcp_factorisations"] = trace.lcp_factorisations;
+  summary["lcp_cg_iterations"] = trace.lcp_cg_iterations;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   staged.commit();
