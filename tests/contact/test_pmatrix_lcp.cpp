@@ -12,6 +12,7 @@
 
 #include "contact/bordered_lu.hpp"
 #include "contact/pmatrix_lcp.hpp"
+#include "contact/window_convolution.hpp"
 
 namespace rollnoise {
 namespace {
@@ -225,6 +226,66 @@ TEST(BorderedLu, ABaseIndexThatLeavesTheWindowForcesAFreshFactor) {
   lu.solve(moved, Eigen::VectorXd::Constant(w.points(), -1.0), z);
   EXPECT_EQ(lu.factorisations(), 2);
   EXPECT_NEAR(z(w.index(4, 1)), 1.0 / (*m)(0, 0), 1e-14);
+}
+
+TEST(WindowConvolution, EqualsTheDenseProductOfATranslationInvariantMatrix) {
+  for (const Window w : {Window{40, 6}, Window{7, 1}, Window{1, 3}}) {
+    const Eigen::MatrixXd m = rolling_matrix(w);
+    WindowConvolution product(m, w.length, w.lateral);
+    std::mt19937_64 rng(17);
+    Eigen::VectorXd y;
+    for (int trial = 0; trial < 3; ++trial) {
+      const Eigen::VectorXd z = random_vector(w.points(), rng);
+      product.apply(z, y);
+      const Eigen::VectorXd expected = m * z;
+      EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff()) << w.length << " x " << w.lateral;
+    }
+  }
+}
+
+TEST(PMatrixLcp, WellConditionedSymmetricStepsByConjugateGradientsMatchTheFactor) {
+  // A symmetric, strongly diagonally dominant window matrix (a Winkler tread under a belt): the
+  // solver takes conjugate gradients with FFT products, and must give the factor's answers.
+  const Window w;
+  Eigen::MatrixXd m(w.points(), w.points());
+  for (int ja = 0; ja < w.lateral; ++ja)
+    for (int ia = 0; ia < w.length; ++ia)
+      for (int jb = 0; jb < w.lateral; ++jb)
+        for (int ib = 0; ib < w.length; ++ib) {
+          const double dx = ia - ib, dy = ja - jb;
+          m(w.index(ia, ja), w.index(ib, jb)) = (dx == 0 && dy == 0 ? 5.0 : 0.0) + 0.02 * std::exp(-std::sqrt(dx * dx + dy * dy) / 4.0);
+        }
+  const std::vector<Eigen::Index> shift = shift_back(w);
+  ASSERT_TRUE(matrix_unchanged_by(m, shift));
+  PMatrixLcpSolver iterative(m, 48, ContactWindow{w.length, w.lateral});
+  PMatrixLcpSolver factorised(m, 48);
+  ASSERT_TRUE(iterative.iterative());
+  ASSERT_FALSE(factorised.iterative());
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> normal;
+  std::vector<double> road(300);
+  for (double& r : road) r = 0.4 * normal(rng);
+  for (int step = 0; step < 60; ++step) {
+    Eigen::VectorXd q(w.points());
+    for (int j = 0; j < w.lateral; ++j)
+      for (int i = 0; i < w.length; ++i) {
+        const double x = i - 0.5 * w.length;
+        q(w.index(i, j)) = 0.02 * x * x - 3.0 - road[static_cast<std::size_t>(i + step) % road.size()];
+      }
+    if (step > 0) {
+      iterative.relabel(shift, true);
+      factorised.relabel(shift, true);
+    }
+    const PMatrixLcpResult& a = iterative.solve(q);
+    const PMatrixLcpResult& b = factorised.solve(q);
+    ASSERT_LE(kkt_violation(m, q, a.z), 1e-10) << "step " << step;
+    ASSERT_LE((a.z - b.z).cwiseAbs().maxCoeff(), 1e-10 * b.z.cwiseAbs().maxCoeff()) << "step " << step;
+    ASSERT_EQ(a.basic, b.basic) << "step " << step;
+  }
+  EXPECT_EQ(iterative.factorisations(), 0);
+  EXPECT_GT(iterative.cg_iterations(), 0);
+  // A matrix that is not diagonally dominant keeps the factor.
+  EXPECT_FALSE(PMatrixLcpSolver(rolling_matrix(w) + rolling_matrix(w).transpose(), 48, ContactWindow{w.length, w.lateral}).iterative());
 }
 
 }  // namespace
