@@ -43,6 +43,7 @@ ModalHistoryEngine::ModalHistoryEngine(const RollingModes& modes, const Eigen::V
     }
   }
   states_.assign(decay_.size(), 0.0);
+  predicted_.assign(decay_.size(), 0.0);
   window_modes_.resize(grid.window, modes.lateral_modes());
   window_field_.resize(grid.window, grid.lateral);
   std::memset(fft_->field(), 0, sizeof(double) * static_cast<std::size_t>(fft_->length()) * modes.lateral_modes());
@@ -73,9 +74,14 @@ std::complex<double> ModalHistoryEngine::amplitude(std::size_t r) const {
 }
 
 std::complex<double> ModalHistoryEngine::rate(std::size_t r) const {
-  std::complex<double> v = residue_sum_[r] * modal_force_[r];
-  for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) v += rate_[s] * states_[s];
-  return v;
+  const std::complex<double> v = residue_sum_[r] * modal_force_[r];
+  double re = v.real(), im = v.imag();
+  for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) {
+    const double qr = rate_[s].real(), qi = rate_[s].imag(), yr = states_[s].real(), yi = states_[s].imag();
+    re += qr * yr - qi * yi;
+    im += qr * yi + qi * yr;
+  }
+  return {re, im};
 }
 
 void ModalHistoryEngine::history(Eigen::Ref<Eigen::VectorXd> u0) const {
@@ -87,8 +93,17 @@ void ModalHistoryEngine::history(Eigen::Ref<Eigen::VectorXd> u0) const {
       std::complex<double> y = 0.0;
       if (m <= modes_.orders()) {
         const auto r = static_cast<std::size_t>(modes_.mode_index(m, l));
-        // What the earlier forces leave at the end of the coming step: Σ a·y.
-        for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) y += decay_[s] * states_[s];
+        // What the earlier forces leave at the end of the coming step: Σ a·y, kept per pole for
+        // advance(). Written in reals: std::complex's product checks for infinities first.
+        double sum_re = 0.0, sum_im = 0.0;
+        for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) {
+          const double ar = decay_[s].real(), ai = decay_[s].imag(), yr = states_[s].real(), yi = states_[s].imag();
+          const double pr = ar * yr - ai * yi, pi = ar * yi + ai * yr;
+          predicted_[s] = {pr, pi};
+          sum_re += pr;
+          sum_im += pi;
+        }
+        y = {sum_re, sum_im};
       }
       // The c2r transform weighs bins 1 … Nθ/2−1 twice (their conjugates) and the Nyquist bin
       // once; the modes ±Nθ/2 are two physical modes that alias to it.
@@ -103,15 +118,22 @@ void ModalHistoryEngine::history(Eigen::Ref<Eigen::VectorXd> u0) const {
   u0 = Eigen::Map<const Eigen::VectorXd>(window_field_.data(), window_field_.size());
   // The backward transform overwrote the field buffer: clear it for the next projection.
   std::memset(fft.field(), 0, sizeof(double) * static_cast<std::size_t>(fft.length()) * modes_.lateral_modes());
+  predicted_valid_ = true;
 }
 
 void ModalHistoryEngine::advance(const Eigen::Ref<const Eigen::VectorXd>& force) {
   project(force);
   const std::size_t count = modal_force_.size();
+  if (!predicted_valid_)
+    for (std::size_t s = 0; s < states_.size(); ++s) predicted_[s] = decay_[s] * states_[s];
   for (std::size_t r = 0; r < count; ++r) {
-    const std::complex<double> f = modal_force_[r];
-    for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) states_[s] = decay_[s] * states_[s] + input_[s] * f;
+    const double fr = modal_force_[r].real(), fi = modal_force_[r].imag();
+    for (std::size_t s = first_pole_[r]; s < first_pole_[r + 1]; ++s) {
+      const double br = input_[s].real(), bi = input_[s].imag();
+      states_[s] = {predicted_[s].real() + br * fr - bi * fi, predicted_[s].imag() + br * fi + bi * fr};
+    }
   }
+  predicted_valid_ = false;
 }
 
 }  // namespace rollnoise

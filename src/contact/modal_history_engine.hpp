@@ -50,6 +50,10 @@ class ModalHistoryEngine : public HistoryEngine {
   std::vector<std::complex<double>> input_;   // b = ρ(e^{qΔt} − 1)/q
   std::vector<std::complex<double>> rate_;    // q
   std::vector<std::complex<double>> states_;  // y
+  // a·y, computed by history() for the u⁰ of the coming step and reused by advance(), which then
+  // only adds b·f (valid until advance()).
+  mutable std::vector<std::complex<double>> predicted_;
+  mutable bool predicted_valid_ = false;
   std::vector<double> direct_;                      // d per mode
   std::vector<std::complex<double>> residue_sum_;  // Σρ per mode
   std::vector<std::complex<double>> modal_force_;
