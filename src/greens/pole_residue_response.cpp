@@ -25,9 +25,18 @@ std::complex<double> exponential_integral(std::complex<double> q, double t0, dou
 }  // namespace
 
 std::complex<double> PoleResidueResponse::receptance(double omega) const {
-  std::complex<double> sum = direct;
-  for (std::size_t r = 0; r < poles.size(); ++r) sum += residues[r] / (kI * omega - poles[r]);
-  return sum;
+  // ρ/(iω − p) = ρ·conj(d)/|d|², d = iω − p, in reals: std::complex's division guards against
+  // overflow and infinities (__divdc3) at many times the cost; d = 0 only for a pole on the
+  // imaginary axis at ω, where the response is infinite either way.
+  double re = direct, im = 0.0;
+  for (std::size_t r = 0; r < poles.size(); ++r) {
+    const double dr = -poles[r].real(), di = omega - poles[r].imag();
+    const double scale = 1.0 / (dr * dr + di * di);
+    const double rr = residues[r].real(), ri = residues[r].imag();
+    re += (rr * dr + ri * di) * scale;
+    im += (ri * dr - rr * di) * scale;
+  }
+  return {re, im};
 }
 
 double PoleResidueResponse::impulse_response(double t) const {
