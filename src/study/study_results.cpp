@@ -145,8 +145,10 @@ nlohmann::json write_study_results(const fs::path& out, const StudySpec& spec, c
   spectra << "receiver,band_hz,Lp_dB,LpA_dB\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::string keys;
-    for (const std::string& label : cases[i].labels) keys += cell(label);
+    for (const std::string& label : cases[i].labels) {
+      keys += cell(label);
       keys += ',';
+    }
     for (const std::string& line : data[i].spectrum_lines) spectra << keys << line << '\n';
   }
   replace_file(out / "spectra.csv", spectra.str());
