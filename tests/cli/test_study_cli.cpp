@@ -107,6 +107,12 @@ TEST(StudyCli, SameResultsWithOneThreadTwoThreadsAndTwoMpiRanks) {
     EXPECT_TRUE(fs::is_regular_file(ws.path("one") / "spectra_speed_22.222.png"));
   }
 
+  // Each case is a normal simulation: its case.toml, run by `simulate`, gives the same sound.
+  const fs::path sma = ws.path("one") / "cases" / "surface-sma11_speed-30.556";
+  const RunResult single = ws.run({"simulate", (sma / "case.toml").string(), "--out", "single"});
+  ASSERT_EQ(single.status, 0) << describe(single);
+  EXPECT_EQ(read_text(ws.path("single") / "spectrum.csv"), read_text(sma / "spectrum.csv"));
+
   const RunResult two = ws.run({"study", "study.toml", "--out", "two", "--threads", "2"});
   ASSERT_EQ(two.status, 0) << describe(two);
   EXPECT_EQ(results_without_wall_times(ws.path("two") / "results.csv"), expected);
