@@ -236,3 +236,37 @@ TEST(StudyCli, BadStudyFilesAreRejectedBeforeAnyCaseRuns) {
 }
 
 }  // namespace
+
+namespace {
+
+// On a terminal the study shows the cases done out of the total and the time left; with CI
+// set it does not. (Two cases that fail at once: the line shows without any case running.)
+TEST(StudyCli, ProgressOnATerminalQuietInCi) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs script(1) for a terminal";
+  if (std::system("script -qec true /dev/null >/dev/null 2>&1") != 0) GTEST_SKIP() << "no pseudo-terminal here";
+  Workspace ws;
+  ws.write("base.toml", cheap_base_case());
+  ws.write("study.toml", "[study]\nname = \"quick\"\ncase = \"base.toml\"\n[vary]\nrolling.speed = [-5.0, -6.0]\n");
+  const auto on_terminal = [&](const std::string& env, const std::string& out) {
+    std::string inner = env;
+    inner += ' ';
+    inner += shell_quote(ROLLNOISE_BINARY);
+    inner += " study study.toml --threads 1 --out ";
+    inner += out;
+    std::string command = "cd ";
+    command += shell_quote(ws.work().string());
+    command += " && script -qec ";
+    command += shell_quote(inner);
+    command += " /dev/null > ../terminal.txt 2>&1";
+    EXPECT_NE(std::system(command.c_str()), -1);
+    return read_text(ws.work() / ".." / "terminal.txt");
+  };
+  const std::string shown = on_terminal("env -u CI", "a");
+  EXPECT_TRUE(contains(shown, "study quick: 2/2 cases, 2 failed")) << shown;
+  EXPECT_TRUE(contains(shown, "left")) << shown;
+  const std::string quiet = on_terminal("env CI=true", "b");
+  EXPECT_FALSE(contains(quiet, "2/2 cases")) << quiet;
+  EXPECT_TRUE(contains(quiet, "case speed--5 failed")) << "failures are reported also in CI:\n" << quiet;
+}
+
+}  // namespace
