@@ -102,7 +102,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
         run_options.radiation_threads = radiation_threads;
         run_options.case_text = study_case_text(table);
         const fs::path folder = case_folder(options.out, c);
-        if (!options.restart && finished(folder, run_options.case_text)) {
+        if (finished(folder, run_options.case_text)) {
           outcome.status = "ok";
           outcome.reused = true;
         } else {

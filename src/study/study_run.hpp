@@ -2,7 +2,8 @@
 // Running a study's cases: each a normal simulation (run_case) into cases/<id>/ of the study's
 // folder, on worker threads, and spread over the MPI ranks (case i on rank i mod size). A case
 // whose folder holds its summary.json and the same case.toml is finished and is skipped (the
-// folder is committed atomically, so a case cut off leaves none and is redone).
+// folder is committed atomically, so a case cut off leaves none and is redone). To start over,
+// the caller removes cases/ first (`--restart`).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -19,7 +20,6 @@ struct StudyRunOptions {
   std::filesystem::path out;  // the study's folder
   int threads = 0;            // cases side by side on this rank; 0: one per core (one under mpirun)
   bool fail_fast = false;     // stop starting cases after the first failure
-  bool restart = false;       // forget finished cases
   bool progress = true;       // cases done, with an ETA, on a terminal (not in CI)
 };
 

@@ -60,7 +60,6 @@ int run_study(const StudyOptions& options) {
   run.out = out;
   run.threads = options.threads;
   run.fail_fast = options.fail_fast;
-  run.restart = false;  // rank 0 removed the cases above
   const std::vector<CaseOutcome> outcomes = run_study_cases(spec, cases, run, mpi);
   if (mpi.rank() != 0) return 0;
 
