@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <string_view>
@@ -178,6 +179,17 @@ nlohmann::json write_study_results(const fs::path& out, const StudySpec& spec, c
 
   nlohmann::json fits = nlohmann::json::array();
   if (speed_key && spec.varied[*speed_key].values.size() >= 2) {
+    // The axis spans the study's speeds (km/h), with a tic at each.
+    double slowest = 0.0, fastest = 0.0;
+    std::string speed_tics;
+    const StudyParameter& speeds = spec.varied[*speed_key];
+    for (std::size_t v = 0; v < speeds.values.size(); ++v) {
+      const double kmh = 3.6 * speeds.values.get(v)->value<double>().value_or(0.0);
+      slowest = v ? std::min(slowest, kmh) : kmh;
+      fastest = v ? std::max(fastest, kmh) : kmh;
+      if (v) speed_tics += ", ";
+      speed_tics += format_number(std::round(kmh * 10.0) / 10.0);
+    }
     for (const std::string& r : receivers) {
       std::ostringstream dat, gp;
       const std::string name = join({"level_speed_", safe(r)});
@@ -186,6 +198,8 @@ nlohmann::json write_study_results(const fs::path& out, const StudySpec& spec, c
          << "set terminal pngcairo size 1000,600 noenhanced font 'DejaVu Sans,10'\nset output '" << name << ".png'\n"
          << "set grid\nset logscale x\nset key outside right\nset xlabel 'speed (km/h)'\n"
          << "set ylabel " << gnuplot_quoted(join({"LAeq at ", r, " (dB)"})) << "\n"
+         << "set xrange [" << format_number(slowest / 1.1) << ":" << format_number(fastest * 1.1) << "]\nset xtics ("
+         << speed_tics << ")\n"
          << "set title " << gnuplot_quoted(join({"Study ", spec.name, ": level against speed"})) << "\nplot ";
       int block = 0;
       for (const std::string& s : series) {
