@@ -37,8 +37,8 @@ struct StudySpec {
   std::string name;
   std::filesystem::path base_case;   // absolute
   std::string reference_surface;     // absolute path of a road.surface value; empty: none
-  std::vector<StudyParameter> fixed;   // [set], in file order
-  std::vector<StudyParameter> varied;  // [vary], in file order
+  std::vector<StudyParameter> fixed;   // [set], in key order (TOML tables are sorted by key)
+  std::vector<StudyParameter> varied;  // [vary], in key order: results.csv columns, case ids
   // The number of cases: the product of the list lengths (saturating at SIZE_MAX).
   std::size_t case_count() const;
 };
