@@ -10,6 +10,7 @@ packages=(
   libopenblas-dev
   libceres-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
   gnuplot-nox fonts-dejavu-core
 )
 missing=()

@@ -174,6 +174,13 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
   return file;
 }
 
+CaseFile CaseFile::from_table(const fs::path& path, toml::table root) {
+  CaseFile file(path, std::move(root));
+  file.merge_library_file("tyre", "file", "models/tyres", "model");
+  file.merge_library_file("road", "surface", "models/surfaces", "surface");
+  return file;
+}
+
 CaseFile CaseFile::load_model(const fs::path& path, const std::vector<std::string>& overrides) {
   CaseFile file(path, parse_toml_file(path));
   file.apply_overrides(overrides, "");

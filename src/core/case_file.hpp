@@ -28,6 +28,9 @@ class CaseFile {
   // files in its folder (or in models/tyres, models/surfaces).
   static CaseFile load(const std::filesystem::path& path,
                        const std::vector<std::string>& overrides = {});
+  // A case assembled in memory (a study's case): `root` as if read from `path` (whose folder
+  // the library files it names are found from), then merged as load() merges them.
+  static CaseFile from_table(const std::filesystem::path& path, toml::table root);
   // A model file: the keys of a [tyre] table at the top level.
   static CaseFile load_model(const std::filesystem::path& path,
                              const std::vector<std::string>& overrides = {});

@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "core/output_directory.hpp"
 #include "core/uff58.hpp"
-#include "sound_report.hpp"
+#include "simulation/sound_report.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;

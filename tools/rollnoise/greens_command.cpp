@@ -27,7 +27,7 @@
 #include "greens/fitted_modal_tyre.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
-#include "greens_plots.hpp"
+#include "simulation/greens_plots.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;

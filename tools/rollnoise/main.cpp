@@ -13,6 +13,7 @@
 #include "greens_command.hpp"
 #include "road_command.hpp"
 #include "simulate_command.hpp"
+#include "study_command.hpp"
 
 namespace {
 
@@ -41,6 +42,8 @@ int main(int argc, char** argv) {
   CLI::App* road_cmd = rollnoise::add_road_command(app, road);
   rollnoise::GreensOptions greens;
   CLI::App* greens_cmd = rollnoise::add_greens_command(app, greens);
+  rollnoise::StudyOptions study;
+  CLI::App* study_cmd = rollnoise::add_study_command(app, study);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -49,7 +52,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road, greens (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road, greens, study (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
     if (calibrate_cmd->parsed()) return rollnoise::run_calibrate(calibrate);
     if (road_cmd->parsed()) return rollnoise::run_road(road);
     if (greens_cmd->parsed()) return rollnoise::run_greens(greens);
+    if (study_cmd->parsed()) return rollnoise::run_study(study);
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;

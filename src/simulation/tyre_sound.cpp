@@ -1,9 +1,10 @@
-#include "tyre_sound.hpp"
+#include "simulation/tyre_sound.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "acoustics/band_power.hpp"
@@ -17,8 +18,8 @@
 #include "core/csv.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
-#include "energy_budget_output.hpp"
-#include "sound_report.hpp"
+#include "simulation/energy_budget_output.hpp"
+#include "simulation/sound_report.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -129,15 +130,16 @@ std::string receivers_outside_tyre(const TyreSoundSettings& settings) {
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget) {
+                                const std::string& source, bool plots, const TyreBudget* budget, bool progress) {
   const auto started = std::chrono::steady_clock::now();
   Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
   for (std::size_t r = 0; r < settings.receivers.size(); ++r)
     positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
   const TyreRadiation radiation(settings.radiation, positions);
-  ProgressReporter progress("radiation " + source, radiation.anchors(sample_rate).size());
-  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, &progress);
-  progress.finish();
+  std::optional<ProgressReporter> bar;
+  if (progress) bar.emplace("radiation " + source, radiation.anchors(sample_rate).size());
+  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, bar ? &*bar : nullptr);
+  if (bar) bar->finish();
   const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
   const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);

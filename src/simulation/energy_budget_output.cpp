@@ -1,4 +1,4 @@
-#include "energy_budget_output.hpp"
+#include "simulation/energy_budget_output.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "point_contact_output.hpp"
+#include "simulation/point_contact_output.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -44,9 +44,10 @@ std::string receivers_outside_tyre(const TyreSoundSettings& settings);
 // "sound_power", "radiation"). tread_velocity: samples × tread points of the radiation mesh
 // (outward normal velocity, m/s) at `sample_rate`; speed in m/s. With a `budget` (the contact and
 // response lines of the run), also budget.csv and its plot (energy_budget_output.hpp) and the
-// summary entry "energy_budget".
+// summary entry "energy_budget". progress: a progress bar over the anchors on a terminal.
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget = nullptr);
+                                const std::string& source, bool plots, const TyreBudget* budget = nullptr,
+                                bool progress = true);
 
 }  // namespace rollnoise

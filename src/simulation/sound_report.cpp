@@ -1,4 +1,4 @@
-#include "sound_report.hpp"
+#include "simulation/sound_report.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "tyre_simulation.hpp"
+#include "simulation/tyre_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -26,15 +27,15 @@
 #include "greens/rolling_tyre_model.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
-#include "point_contact_output.hpp"
+#include "simulation/point_contact_output.hpp"
 #include "core/hdf5_writer.hpp"
 #include "radiation/belt_sampling.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 #include "response/surface_response.hpp"
 #include "acoustics/band_power.hpp"
-#include "energy_budget_output.hpp"
-#include "greens_plots.hpp"
-#include "tyre_sound.hpp"
+#include "simulation/energy_budget_output.hpp"
+#include "simulation/greens_plots.hpp"
+#include "simulation/tyre_sound.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -235,7 +236,8 @@ int circumferential_points(const TyreRollingSettings& settings, const RollingTyr
 
 }  // namespace
 
-int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::steady_clock::time_point started) {
+CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::steady_clock::time_point started,
+                               const CaseRunOptions& options) {
   const ConfigTable tyre = file.section("tyre");
   const ConfigTable road_table = file.section("road");
   const ConfigTable rolling = file.section("rolling");
@@ -251,6 +253,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
       read_tyre_sound_settings(file.optional_section("radiation"), output, model.radius, model.width,
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
+  if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
 
   TyreGrid grid;
   grid.radius = model.radius;
@@ -291,7 +294,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
                         0.5 * grid.contact_width());
 
   StagedOutputDirectory staged(out);
-  ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), steps + 1);
+  std::optional<ProgressReporter> progress;
+  if (options.progress) progress.emplace("simulate " + fs::path(file.path()).filename().string(), steps + 1);
   const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
                             settings.road_sampling};
   const auto contact_started = std::chrono::steady_clock::now();
@@ -302,7 +306,7 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
         Eigen::VectorXd::Constant(grid.points(), model.tread->spring_stiffness * grid.dx() * grid.dy()),
         model.tread->spring_exponent});
   }
-  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_modes, local, *road, run, &progress, springs.get());
+  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_modes, local, *road, run, progress ? &*progress : nullptr, springs.get());
   const double contact_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count();
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
@@ -444,7 +448,8 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
     }
     budget_written = budget != nullptr;
     const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, tread_velocity, 1.0 / dt, settings.speed,
-                                                  fs::path(file.path()).filename().string(), plots, budget.get());
+                                                  fs::path(file.path()).filename().string(), plots, budget.get(),
+                                                  options.progress);
     for (const auto& [key, value] : heard.items()) summary[key] = value;
   }
   summary["warnings"] = trace.warnings;
@@ -457,13 +462,14 @@ int run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::
   summary["lcp_cg_iterations"] = trace.lcp_cg_iterations;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
+  if (!options.case_text.empty()) write_text_file(staged.staging() / "case.toml", options.case_text);
   staged.commit();
   std::string written = "contact.csv, contact.h5, summary.json";
   if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
   if (budget_written) written += ", budget.csv";  // the plate's estimates only
   if (sound.enabled && sound.wav) written += ", WAV files";
-  std::printf("rollnoise: wrote %s (%s%s)\n", out.string().c_str(), written.c_str(), plots ? " and plots" : "");
-  return 0;
+  if (plots) written += " and plots";
+  return {out, std::move(summary), std::move(written)};
 }
 
 }  // namespace rollnoise

@@ -1,4 +1,4 @@
-#include "greens_plots.hpp"
+#include "simulation/greens_plots.hpp"
 
 #include <fstream>
 #include <sstream>

@@ -1,0 +1,78 @@
+#include "study/mpi_session.hpp"
+
+#include <cstdlib>
+
+#ifdef ROLLNOISE_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace rollnoise {
+namespace {
+
+// Set by OpenMPI's launcher (and by PMIx-based ones) in every rank it starts.
+bool launched_by_mpirun() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
+}  // namespace
+
+bool MpiSession::built_with_mpi() noexcept {
+#ifdef ROLLNOISE_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+MpiSession::MpiSession() {
+#ifdef ROLLNOISE_HAVE_MPI
+  if (!launched_by_mpirun()) return;
+  int provided = 0;
+  // Only the main thread calls MPI; the case threads never do.
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  active_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#endif
+}
+
+MpiSession::~MpiSession() {
+#ifdef ROLLNOISE_HAVE_MPI
+  if (active_) MPI_Finalize();
+#endif
+}
+
+void MpiSession::barrier() const {
+#ifdef ROLLNOISE_HAVE_MPI
+  if (active_) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+std::vector<std::string> MpiSession::gather(const std::string& text) const {
+#ifdef ROLLNOISE_HAVE_MPI
+  if (active_) {
+    int length = static_cast<int>(text.size());
+    std::vector<int> lengths(static_cast<std::size_t>(size_));
+    MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::vector<int> offsets(static_cast<std::size_t>(size_), 0);
+    int total = 0;
+    for (int r = 0; r < size_; ++r) {
+      offsets[static_cast<std::size_t>(r)] = total;
+      total += lengths[static_cast<std::size_t>(r)];
+    }
+    std::string all(static_cast<std::size_t>(rank_ == 0 ? total : 0), '\0');
+    MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+    std::vector<std::string> out;
+    if (rank_ == 0)
+      for (int r = 0; r < size_; ++r)
+        out.push_back(all.substr(static_cast<std::size_t>(offsets[static_cast<std::size_t>(r)]),
+                                 static_cast<std::size_t>(lengths[static_cast<std::size_t>(r)])));
+    return out;
+  }
+#endif
+  return {text};
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,160 @@
+#include "study/study_run.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "core/case_file.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "simulation/case_run.hpp"
+#include "study/mpi_session.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+namespace {
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Finished by an earlier run of the same case: committed (summary.json there) from the same
+// case file.
+bool finished(const fs::path& folder, const std::string& case_text) {
+  std::error_code ec;
+  return fs::is_regular_file(folder / "summary.json", ec) && read_all(folder / "case.toml") == case_text;
+}
+
+// Cases done out of the total with an ETA, on one line of a terminal.
+class StudyProgress {
+ public:
+  StudyProgress(std::string name, std::size_t total, bool wanted)
+      : name_(std::move(name)), total_(total), enabled_(wanted && ProgressReporter::wanted()),
+        start_(std::chrono::steady_clock::now()) {}
+  void update(std::size_t done, std::size_t run, std::size_t failed) {
+    if (!enabled_) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double left = run > 0 ? elapsed / static_cast<double>(run) * static_cast<double>(total_ - done) : 0.0;
+    std::fprintf(stderr, "\rstudy %s: %zu/%zu cases, %zu failed, %.0f s elapsed, about %.0f s left   ", name_.c_str(), done,
+                 total_, failed, elapsed, left);
+    std::fflush(stderr);
+  }
+  ~StudyProgress() {
+    if (enabled_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  std::string name_;
+  std::size_t total_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+fs::path case_folder(const fs::path& out, const StudyCase& c) { return out / "cases" / c.id; }
+
+std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vector<StudyCase>& cases,
+                                         const StudyRunOptions& options, const MpiSession& mpi) {
+  // This rank's cases: i mod size, so every rank gets a mix of the product.
+  std::vector<std::size_t> mine;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (static_cast<int>(i % static_cast<std::size_t>(mpi.size())) == mpi.rank()) mine.push_back(i);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t workers = std::max<std::size_t>(
+      1, std::min(mine.size(), static_cast<std::size_t>(options.threads > 0 ? options.threads
+                                                          : mpi.size() > 1 ? 1
+                                                                           : static_cast<int>(cores))));
+  // The cores shared among the cases running side by side: each case's radiation takes its part.
+  const int radiation_threads = std::max(1, static_cast<int>(cores / workers));
+
+  std::vector<CaseOutcome> outcomes(cases.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex mutex;
+  std::size_t done = 0, run = 0, failed = 0;
+  StudyProgress progress(spec.name, mine.size(), options.progress && mpi.size() == 1);
+  const auto work = [&] {
+    for (std::size_t i = next++; i < mine.size(); i = next++) {
+      const StudyCase& c = cases[mine[i]];
+      CaseOutcome& outcome = outcomes[c.index];
+      if (stop) {
+        outcome.status = "not run";
+        outcome.message = "an earlier case failed (--fail-fast)";
+        continue;
+      }
+      const auto started = std::chrono::steady_clock::now();
+      try {
+        const toml::table table = study_case_table(spec, c);
+        CaseRunOptions run_options;
+        run_options.progress = false;
+        run_options.radiation_threads = radiation_threads;
+        run_options.case_text = study_case_text(table);
+        const fs::path folder = case_folder(options.out, c);
+        if (finished(folder, run_options.case_text)) {
+          outcome.status = "ok";
+          outcome.reused = true;
+        } else {
+          run_case(study_case_file(spec, table), folder, run_options);
+          outcome.status = "ok";
+        }
+      } catch (const InputError& error) {
+        outcome.status = "failed";
+        outcome.message = error.what();
+      } catch (const std::exception& error) {
+        outcome.status = "failed";
+        outcome.message = std::string("internal error: ") + error.what();
+      }
+      outcome.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const std::lock_guard lock(mutex);
+      ++done;
+      if (!outcome.reused) ++run;
+      if (outcome.status == "failed") {
+        ++failed;
+        if (options.fail_fast) stop = true;
+        std::fprintf(stderr, "%srollnoise: case %s failed: %s\n", ProgressReporter::wanted() ? "\r" : "", c.id.c_str(),
+                     outcome.message.c_str());
+      }
+      progress.update(done, run, failed);
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+    work();
+  }
+
+  // Rank 0 gathers the outcomes of the others' cases.
+  nlohmann::json mine_json = nlohmann::json::object();
+  for (std::size_t i : mine)
+    mine_json[std::to_string(i)] = {{"status", outcomes[i].status},
+                                    {"message", outcomes[i].message},
+                                    {"reused", outcomes[i].reused},
+                                    {"wall_time_s", outcomes[i].wall_time_s}};
+  const std::vector<std::string> gathered = mpi.gather(mine_json.dump());
+  if (mpi.rank() != 0) return {};
+  for (const std::string& text : gathered) {
+    const nlohmann::json rank_outcomes = nlohmann::json::parse(text);  // kept: items() refers to it
+    for (const auto& [key, value] : rank_outcomes.items()) {
+      CaseOutcome& o = outcomes.at(std::stoul(key));
+      o.status = value["status"].get<std::string>();
+      o.message = value["message"].get<std::string>();
+      o.reused = value["reused"].get<bool>();
+      o.wall_time_s = value["wall_time_s"].get<double>();
+    }
+  }
+  return outcomes;
+}
+
+}  // namespace rollnoise

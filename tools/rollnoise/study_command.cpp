@@ -1,0 +1,76 @@
+#include "study_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "core/error.hpp"
+#include "study/mpi_session.hpp"
+#include "study/study_cases.hpp"
+#include "study/study_file.hpp"
+#include "study/study_results.hpp"
+#include "study/study_run.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+
+CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "study",
+      "Run many cases: the product of a study file's [vary] lists on a base case, each a normal\n"
+      "simulation into cases/<id>/, side by side on threads and, under `mpirun -n N`, over the\n"
+      "ranks. Writes results.csv, spectra.csv, summary.json and plots. Resumable: finished cases\n"
+      "are kept on a rerun. A case that fails is reported and the others go on; the exit status\n"
+      "is then 1.");
+  cmd->add_option("study", options.study_file, "Study file (TOML) with [study], [set] and [vary]")->required();
+  cmd->add_option("--out", options.out, "Output folder (default: out/<study name>)");
+  cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails");
+  cmd->add_flag("--restart", options.restart, "Run every case again, also those an earlier run finished");
+  cmd->add_flag("--yes", options.yes,
+                "Run a study of more than " + std::to_string(kStudyCasesWithoutYes) + " cases");
+  cmd->footer("Example:\n  rollnoise study models/studies/surfaces_cpx.toml --out out/surfaces\n"
+              "  mpirun -n 2 rollnoise study models/studies/surfaces_cpx.toml --out out/surfaces");
+  return cmd;
+}
+
+int run_study(const StudyOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  MpiSession mpi;  // every rank reads the study and the same list of cases
+  const StudySpec spec = read_study_file(options.study_file);
+  if (spec.case_count() > kStudyCasesWithoutYes && !options.yes)
+    throw InputError(options.study_file, "vary",
+                     "makes " + (spec.case_count() == SIZE_MAX ? std::string("too many") : std::to_string(spec.case_count())) +
+                         " cases (more than " + std::to_string(kStudyCasesWithoutYes) +
+                         "): shorten the lists, or run with --yes");
+  const std::vector<StudyCase> cases = study_cases(spec);
+  const fs::path out = options.out.empty() ? fs::path("out") / spec.name : fs::path(options.out);
+  if (mpi.rank() == 0) {
+    if (options.restart) fs::remove_all(out / "cases");
+    fs::create_directories(out / "cases");
+    // Staging folders of cases cut off by an earlier run (core/output_directory.hpp).
+    for (const auto& entry : fs::directory_iterator(out / "cases"))
+      if (entry.path().filename().string().starts_with(".")) fs::remove_all(entry.path());
+  }
+  mpi.barrier();
+  StudyRunOptions run;
+  run.out = out;
+  run.threads = options.threads;
+  run.fail_fast = options.fail_fast;
+  const std::vector<CaseOutcome> outcomes = run_study_cases(spec, cases, run, mpi);
+  if (mpi.rank() != 0) return 0;
+
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const nlohmann::json summary =
+      write_study_results(out, spec, cases, outcomes, {{"ranks", mpi.size()}, {"wall_time_s", wall}}, true);
+  const auto& counts = summary["cases"];
+  std::printf("rollnoise: wrote %s (results.csv, spectra.csv, summary.json, plots): %zu cases, %zu ok (%zu from an earlier run), %zu failed\n",
+              out.string().c_str(), counts["total"].get<std::size_t>(), counts["ok"].get<std::size_t>(),
+              counts["from_earlier_run"].get<std::size_t>(), counts["failed"].get<std::size_t>());
+  return counts["ok"].get<std::size_t>() == cases.size() ? 0 : 1;
+}
+
+}  // namespace rollnoise

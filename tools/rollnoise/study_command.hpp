@@ -1,0 +1,27 @@
+#pragma once
+// `rollnoise study STUDY.toml [--out DIR] [--threads N] [--fail-fast] [--restart] [--yes]`
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace rollnoise {
+
+struct StudyOptions {
+  std::string study_file;
+  std::string out;  // empty: out/<study name>
+  int threads = 0;
+  bool fail_fast = false;
+  bool restart = false;
+  bool yes = false;
+};
+
+// Above this many cases a study asks for --yes (a typo in a list can make thousands).
+inline constexpr std::size_t kStudyCasesWithoutYes = 200;
+
+CLI::App* add_study_command(CLI::App& app, StudyOptions& options);
+
+int run_study(const StudyOptions& options);
+
+}  // namespace rollnoise
