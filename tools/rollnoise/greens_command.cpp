@@ -109,6 +109,7 @@ void write_table(const fs::path& path, const std::vector<double>& f, const std::
       const double row[] = {f[i], d[j], v.real(), v.imag()};
       csv.row(row, 4);
     }
+  close_output_file(out, path);
 }
 
 // Point and transfer mobility against frequency: magnitude (dB re 1 m/(N·s)) and phase, one
@@ -156,6 +157,7 @@ void plot_dispersion(const fs::path& dir, const ModalReceptanceTable& table) {
       }
       out << '\n';  // a blank line between orders: gnuplot's grid for pm3d
     }
+    close_output_file(out, dir / "dispersion.csv");
   }
   std::ostringstream gp;
   gp << "# Drawn by rollnoise greens from dispersion.csv; run `gnuplot dispersion.gp` to redraw.\n"
@@ -184,6 +186,7 @@ void write_green_against_time(const fs::path& dir, const CentreLineResponse& res
       for (std::size_t j = 0; j < points.size(); ++j) row[j + 1] = green(k, static_cast<Eigen::Index>(j));
       csv.row(row.data(), row.size());
     }
+    close_output_file(out, dir / "green_time.csv");
   }
   std::ostringstream gp;
   gp << "# Drawn by rollnoise greens from green_time.csv; run `gnuplot green_time.gp` to redraw.\n"

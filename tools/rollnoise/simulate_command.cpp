@@ -18,6 +18,7 @@
 #include "greens/model_factory.hpp"
 #include "point_contact_output.hpp"
 #include "road/road_profile.hpp"
+#include "run_size.hpp"
 #include "tyre_simulation.hpp"
 
 namespace rollnoise {
@@ -40,6 +41,8 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--set", options.overrides,
                   "Override a case value: section.key=value (value as TOML; bare words are strings). Repeatable")
       ->type_name("KEY=VALUE");
+  cmd->add_flag("--force", options.force,
+                "Run even when the estimate of the run's memory or output exceeds what the machine has");
   cmd->footer(
       "Example:\n  rollnoise simulate models/cases/larsson2000_sdof_sine.toml --out out/sdof "
       "--set rolling.static_load=3");
@@ -58,7 +61,7 @@ int run_simulate(const SimulateOptions& options) {
     }
     const std::string kind = file.section("tyre").choice("model", {"sdof", "coupled_sdof", "plate", "two_layer", "tabulated"});
     if (kind != "sdof" && kind != "coupled_sdof") {
-      return run_tyre_simulation(file, out, started);
+      return run_tyre_simulation(file, out, started, options.force);
     }
     const ConfigTable tyre = file.section("tyre");
     if (file.top().contains("radiation")) {
@@ -72,6 +75,8 @@ int run_simulate(const SimulateOptions& options) {
 
     const std::unique_ptr<GreensModel> model = make_greens_model(tyre);
     const RollingSettings settings = read_rolling_settings(rolling);
+    check_run_fits(estimate_point_run(settings.steps() + 1, static_cast<std::uint64_t>(model->point_count()), file.name()),
+                   available_memory_bytes(), available_disk_bytes(out), options.force);
     output.text("directory", "");
     const bool plots = output.boolean("plots", true);
     output.reject_unknown_keys();
