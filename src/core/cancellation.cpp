@@ -1,6 +1,6 @@
 #include "core/cancellation.hpp"
 
-#include <string.h>
+#include <unistd.h>
 
 #include <string>
 
@@ -28,7 +28,7 @@ Interrupted::Interrupted(int signal_number)
 
 CancellationToken::CancellationToken() noexcept : flag_(&signal_received) {}
 
-SignalCancellation::SignalCancellation() {
+SignalCancellation::SignalCancellation(std::chrono::milliseconds grace) {
   signal_received.store(0, std::memory_order_relaxed);
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
@@ -36,9 +36,23 @@ SignalCancellation::SignalCancellation() {
   action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigaction(SIGINT, &action, &previous_int_);
   sigaction(SIGTERM, &action, &previous_term_);
+  watchdog_ = std::jthread([grace](std::stop_token stop) {
+    using namespace std::chrono_literals;
+    while (!stop.stop_requested() && signal_received.load(std::memory_order_relaxed) == 0) std::this_thread::sleep_for(20ms);
+    const auto deadline = std::chrono::steady_clock::now() + grace;
+    while (!stop.stop_requested() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(10ms);
+    if (stop.stop_requested()) return;
+    const int signal_number = signal_received.load(std::memory_order_relaxed);
+    std::string line = "rollnoise: interrupted by " + signal_name(signal_number);
+    line += ": stopped at once (busy in a step that polls no cancellation); the destination is untouched\n";
+    (void)!::write(STDERR_FILENO, line.data(), line.size());
+    ::_exit(128 + signal_number);
+  });
 }
 
 SignalCancellation::~SignalCancellation() {
+  watchdog_.request_stop();
+  if (watchdog_.joinable()) watchdog_.join();
   sigaction(SIGINT, &previous_int_, nullptr);
   sigaction(SIGTERM, &previous_term_, nullptr);
 }

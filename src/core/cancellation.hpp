@@ -8,8 +8,10 @@
 // unwinds like any error: the StagedOutputDirectory on the way removes its staging folder and
 // leaves the destination as it was, and main() exits with 128 + the signal number (130, 143).
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <stdexcept>
+#include <thread>
 
 namespace rollnoise {
 
@@ -46,11 +48,13 @@ class CancellationToken {
 
 // While alive, SIGINT and SIGTERM set the flag of the default CancellationToken instead of
 // ending the process; the handlers are reset by the first signal (SA_RESETHAND), so a second
-// Ctrl-C ends a run that does not stop by itself. The destructor puts back the handlers that
-// were there before. One at a time.
+// Ctrl-C ends the process at once. A run busy in a stretch that polls no token (a library call
+// such as tabulating a two-layer tyre's modes, before any output is staged) is ended by a
+// watchdog thread `grace` after the signal: it exits with 128 + the signal number, printing one
+// line. The destructor puts back the handlers that were there before. One at a time.
 class SignalCancellation {
  public:
-  SignalCancellation();
+  explicit SignalCancellation(std::chrono::milliseconds grace = std::chrono::milliseconds(800));
   ~SignalCancellation();
   SignalCancellation(const SignalCancellation&) = delete;
   SignalCancellation& operator=(const SignalCancellation&) = delete;
@@ -60,6 +64,7 @@ class SignalCancellation {
  private:
   struct sigaction previous_int_ {};
   struct sigaction previous_term_ {};
+  std::jthread watchdog_;
 };
 
 }  // namespace rollnoise

@@ -90,6 +90,7 @@ void stop_running_simulate(int signal_number) {
   EXPECT_EQ(WEXITSTATUS(raw), 128 + signal_number) << err;
   EXPECT_LT(seconds, 1.0) << "took " << seconds << " s to stop";
   EXPECT_TRUE(contains(err, signal_number == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM")) << err;
+  EXPECT_TRUE(contains(err, "the partial output was removed")) << err;  // not the watchdog
   EXPECT_EQ(count_lines(err), 1u) << err;
   EXPECT_FALSE(fs::exists(staging_of(ws, pid)));
   EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/cancellation.hpp"
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
@@ -246,7 +247,9 @@ int run_greens(const GreensOptions& options) {
   const auto nf = static_cast<Eigen::Index>(frequencies.size());
   const auto nd = static_cast<Eigen::Index>(distances.size());
   Eigen::MatrixXcd receptance(nf, nd), mobility(nf, nd);
+  const CancellationToken cancel;  // Ctrl-C (core/cancellation.hpp)
   for (Eigen::Index i = 0; i < nf; ++i) {
+    cancel.throw_if_cancelled();
     const double omega = 2.0 * std::numbers::pi * frequencies[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < nd; ++j) {
       receptance(i, j) = response->receptance(distances[static_cast<std::size_t>(j)], omega);
