@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   g++ cmake ninja-build pkg-config
+  clang libclang-rt-14-dev
   libeigen3-dev libfftw3-dev libsundials-dev libsndfile1-dev libsamplerate0-dev libhdf5-dev
   libopenblas-dev
   libceres-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -286,12 +287,23 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
   class Progress : public ceres::IterationCallback {
    public:
     Progress(const CalibrationSettings& settings, int start) : settings_(settings), start_(start) {}
+    // An exception from the progress function (Interrupted, on Ctrl-C) must not cross Ceres:
+    // the solve is aborted and the exception rethrown after it (rethrow_failure).
     ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-      if (settings_.progress)
-        settings_.progress(start_, static_cast<int>(std::max(1, settings_.starts)), done + summary.iteration);
+      try {
+        if (settings_.progress)
+          settings_.progress(start_, static_cast<int>(std::max(1, settings_.starts)), done + summary.iteration);
+      } catch (...) {
+        failure = std::current_exception();
+        return ceres::SOLVER_ABORT;
+      }
       return ceres::SOLVER_CONTINUE;
     }
+    void rethrow_failure() const {
+      if (failure) std::rethrow_exception(failure);
+    }
     int done = 0;  // iterations of the earlier stages: the count runs on through the stages
+    std::exception_ptr failure;
 
    private:
     const CalibrationSettings& settings_;
@@ -338,6 +350,7 @@ CalibrationResult calibrate(const CalibrationModel& model, const std::vector<Mea
       options.callbacks.push_back(&progress);
       ceres::Solver::Summary summary;
       ceres::Solve(options, &problem, &summary);
+      progress.rethrow_failure();
       outcome.iterations += static_cast<int>(summary.num_successful_steps + summary.num_unsuccessful_steps);
       progress.done += static_cast<int>(summary.iterations.size());
       if (!last) continue;

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -90,11 +92,34 @@ void StagedOutputDirectory::commit() {
   if (!old.empty()) fs::remove_all(old, ec);
 }
 
+void throw_output_error(const fs::path& path, int error_number) {
+  std::string message = "cannot write ";
+  message += path.string();
+  if (error_number != 0) {
+    message += ": ";
+    message += std::strerror(error_number);
+  }
+  if (error_number == ENOSPC || error_number == EFBIG || error_number == EDQUOT) {
+    message += " (the disk, a quota or the file-size limit is full: free some space or choose --out elsewhere)";
+  }
+  throw OutputError(message);
+}
+
+void close_output_file(std::ofstream& out, const fs::path& path) {
+  // errno still holds the reason of the write that failed: nothing else ran since the stream
+  // was last written to.
+  if (!out.is_open() || !out) throw_output_error(path, errno);
+  errno = 0;
+  out.flush();
+  if (!out) throw_output_error(path, errno);
+  out.close();
+  if (!out) throw_output_error(path, errno);
+}
+
 void write_text_file(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  close_output_file(out, path);
 }
 
 }  // namespace rollnoise

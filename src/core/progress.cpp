@@ -13,8 +13,9 @@ bool ProgressReporter::wanted() {
   return !in_ci && ::isatty(STDERR_FILENO) == 1;
 }
 
-ProgressReporter::ProgressReporter(std::string label, std::size_t total)
+ProgressReporter::ProgressReporter(std::string label, std::size_t total, CancellationToken cancel)
     : label_(std::move(label)),
+      cancel_(cancel),
       total_(total),
       enabled_(wanted()),
       start_(std::chrono::steady_clock::now()),
@@ -23,6 +24,7 @@ ProgressReporter::ProgressReporter(std::string label, std::size_t total)
 ProgressReporter::~ProgressReporter() { finish(); }
 
 void ProgressReporter::update(std::size_t done) {
+  cancel_.throw_if_cancelled();
   if (!enabled_ || (done & 255u) != 0) return;
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();

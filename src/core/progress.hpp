@@ -1,20 +1,25 @@
 #pragma once
 // Progress of long runs on a terminal: silent in CI (CI set), when stderr is not a terminal,
-// and for runs that finish within about a second.
+// and for runs that finish within about a second. Every update also polls the run's
+// CancellationToken (core/cancellation.hpp): a loop that reports progress stops on Ctrl-C.
 #include <chrono>
 #include <cstddef>
 #include <string>
+
+#include "core/cancellation.hpp"
 
 namespace rollnoise {
 
 class ProgressReporter {
  public:
-  ProgressReporter(std::string label, std::size_t total);
+  // `cancel`: the token update() polls (by default the one SignalCancellation drives).
+  ProgressReporter(std::string label, std::size_t total, CancellationToken cancel = {});
   ~ProgressReporter();
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
 
-  // Cheap enough to call every step: it looks at the clock only every 256 calls.
+  // Cheap enough to call every step: it looks at the clock only every 256 calls. Throws
+  // Interrupted when the token is cancelled (on every call: one relaxed atomic load).
   void update(std::size_t done);
   void finish();
 
@@ -23,6 +28,7 @@ class ProgressReporter {
 
  private:
   std::string label_;
+  CancellationToken cancel_;
   std::size_t total_;
   bool enabled_;
   bool shown_ = false;

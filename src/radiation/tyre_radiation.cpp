@@ -217,14 +217,15 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
       const std::size_t a = order[i];
       try {
         solve_anchor(a);
+        const std::lock_guard lock(mutex);
+        ++finished;
+        // May throw Interrupted (Ctrl-C): stops every worker like a failure.
+        if (progress) progress->update(finished);
       } catch (...) {
         const std::lock_guard lock(mutex);
         if (!failure) failure = std::current_exception();
         next = anchor.size();
       }
-      const std::lock_guard lock(mutex);
-      ++finished;
-      if (progress) progress->update(finished);
     }
   };
   {

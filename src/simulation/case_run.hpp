@@ -21,6 +21,9 @@ struct CaseRunOptions {
   // Written as case.toml beside the outputs, in the same atomic commit (a study's generated
   // case, so that a finished case can be recognised and rerun); empty: none.
   std::string case_text;
+  // Run even when the estimate of the run's memory or output exceeds what the machine has
+  // (run_size.hpp); otherwise such a case is refused before it starts.
+  bool force = false;
 };
 
 struct CaseResult {

@@ -8,6 +8,7 @@
 
 #include "core/csv.hpp"
 #include "core/gnuplot.hpp"
+#include "core/output_directory.hpp"
 #include "greens/centre_line_response.hpp"
 
 namespace rollnoise {
@@ -28,6 +29,7 @@ void write_greens_circumference(const std::filesystem::path& dir, const CentreLi
       const double row[5] = {x[i], g(at[0], c), g(at[1], c), g(at[2], c), g(at[3], c)};
       csv.row(row, 5);
     }
+    close_output_file(out, dir / "greens_circumference.csv");
   }
   std::ostringstream gp;
   gp << "# The belt's Green's function along the circumference (cf. Larsson 2000, Fig. 5a).\n"

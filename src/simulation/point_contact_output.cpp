@@ -7,6 +7,7 @@
 #include "contact/point_contact.hpp"
 #include "core/csv.hpp"
 #include "core/gnuplot.hpp"
+#include "core/output_directory.hpp"
 
 namespace rollnoise {
 
@@ -29,8 +30,7 @@ void write_contact_csv(const std::filesystem::path& path, const ContactTrace& tr
     }
     csv.row(row.data(), row.size());
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  close_output_file(out, path);
 }
 
 nlohmann::json summarise_contact(const ContactTrace& trace) {

@@ -17,6 +17,7 @@
 #include "greens/model_factory.hpp"
 #include "road/road_profile.hpp"
 #include "simulation/point_contact_output.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -35,6 +36,8 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
 
   const std::unique_ptr<GreensModel> model = make_greens_model(tyre);
   const RollingSettings settings = read_rolling_settings(rolling);
+  check_run_fits(estimate_point_run(settings.steps() + 1, static_cast<std::uint64_t>(model->point_count()), file.name()),
+                 available_memory_bytes(), available_disk_bytes(out), options.force);
   output.text("directory", "");
   const bool plots = output.boolean("plots", true);
   output.reject_unknown_keys();

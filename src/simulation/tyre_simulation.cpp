@@ -35,6 +35,7 @@
 #include "acoustics/band_power.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/greens_plots.hpp"
+#include "simulation/run_size.hpp"
 #include "simulation/tyre_sound.hpp"
 
 namespace rollnoise {
@@ -286,7 +287,14 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                                  : Eigen::MatrixXd::Zero(grid.points(), grid.points());
   // The run samples t = n·dt for n = 0 … steps (rolling_tyre.cpp), which can end up to half a
   // step after `duration`: the road must reach the last step's position.
+  if (!(settings.duration / dt < 1e15)) rolling.fail("duration", "gives more than 1e15 time steps; shorten it");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
+  check_run_fits(estimate_tyre_run(steps + 1, static_cast<std::uint64_t>(grid.points()), static_cast<std::uint64_t>(grid.lateral),
+                                   static_cast<std::uint64_t>(grid.circumferential),
+                                   sound.enabled && sound.wav ? sound.receivers.size() : 0,
+                                   static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate),
+                                   file.name()),
+                 available_memory_bytes(), available_disk_bytes(out), options.force);
   const double travel = settings.speed * dt * static_cast<double>(steps);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =

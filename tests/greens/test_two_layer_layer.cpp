@@ -243,7 +243,7 @@ TEST(CausalModulus, ReferenceValuesPassivityAndDebyeSuperposition) {
               modulus.loss_factor_at(2 * pi * 5000));
   // Elastic, and too much loss.
   EXPECT_EQ(CausalModulus(0.0).factor(123.0), cd(1.0, 0.0));
-  EXPECT_THROW(CausalModulus(CausalModulus::largest_loss_factor()), std::invalid_argument);
+  EXPECT_THROW(CausalModulus{CausalModulus::largest_loss_factor()}, std::invalid_argument);  // braces: clang reads parentheses as a declaration
   EXPECT_THROW(CausalModulus(-0.01), std::invalid_argument);
   EXPECT_NO_THROW(CausalModulus(0.3));
 }

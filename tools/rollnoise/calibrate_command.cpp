@@ -160,8 +160,7 @@ void write_fit_csv(const fs::path& path, const CalibrationResult& result) {
       csv.row(row, std::size(row));
     }
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  close_output_file(out, path);
 }
 
 std::string gnuplot_text(const std::string& text) {

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/cancellation.hpp"
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
@@ -109,6 +110,7 @@ void write_table(const fs::path& path, const std::vector<double>& f, const std::
       const double row[] = {f[i], d[j], v.real(), v.imag()};
       csv.row(row, 4);
     }
+  close_output_file(out, path);
 }
 
 // Point and transfer mobility against frequency: magnitude (dB re 1 m/(N·s)) and phase, one
@@ -156,6 +158,7 @@ void plot_dispersion(const fs::path& dir, const ModalReceptanceTable& table) {
       }
       out << '\n';  // a blank line between orders: gnuplot's grid for pm3d
     }
+    close_output_file(out, dir / "dispersion.csv");
   }
   std::ostringstream gp;
   gp << "# Drawn by rollnoise greens from dispersion.csv; run `gnuplot dispersion.gp` to redraw.\n"
@@ -184,6 +187,7 @@ void write_green_against_time(const fs::path& dir, const CentreLineResponse& res
       for (std::size_t j = 0; j < points.size(); ++j) row[j + 1] = green(k, static_cast<Eigen::Index>(j));
       csv.row(row.data(), row.size());
     }
+    close_output_file(out, dir / "green_time.csv");
   }
   std::ostringstream gp;
   gp << "# Drawn by rollnoise greens from green_time.csv; run `gnuplot green_time.gp` to redraw.\n"
@@ -243,7 +247,9 @@ int run_greens(const GreensOptions& options) {
   const auto nf = static_cast<Eigen::Index>(frequencies.size());
   const auto nd = static_cast<Eigen::Index>(distances.size());
   Eigen::MatrixXcd receptance(nf, nd), mobility(nf, nd);
+  const CancellationToken cancel;  // Ctrl-C (core/cancellation.hpp)
   for (Eigen::Index i = 0; i < nf; ++i) {
+    cancel.throw_if_cancelled();
     const double omega = 2.0 * std::numbers::pi * frequencies[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < nd; ++j) {
       receptance(i, j) = response->receptance(distances[static_cast<std::size_t>(j)], omega);

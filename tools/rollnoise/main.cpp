@@ -1,13 +1,17 @@
 // rollnoise: tyre/road noise from first principles. One verb per job (ARCHITECTURE.md).
 // Exit status: 0 success, 2 bad input (one message naming the file, the key and what is
-// allowed), 1 internal failure.
+// allowed), 1 internal failure, 130/143 stopped by SIGINT/SIGTERM (core/cancellation.hpp: the
+// partial output is removed, the destination left as it was).
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "core/cancellation.hpp"
 #include "core/error.hpp"
+#include "core/output_directory.hpp"
 #include "analyse_command.hpp"
 #include "calibrate_command.hpp"
 #include "greens_command.hpp"
@@ -62,6 +66,11 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }
+  // From here on Ctrl-C and SIGTERM stop the run through its CancellationToken.
+  const rollnoise::SignalCancellation cancellation;
+  // A file-size limit (ulimit -f) makes a write fail (EFBIG, an OutputError) instead of
+  // killing the process with its staging folder left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     if (simulate_cmd->parsed()) return rollnoise::run_simulate(simulate);
     if (analyse_cmd->parsed()) return rollnoise::run_analyse(analyse);
@@ -69,9 +78,15 @@ int main(int argc, char** argv) {
     if (road_cmd->parsed()) return rollnoise::run_road(road);
     if (greens_cmd->parsed()) return rollnoise::run_greens(greens);
     if (study_cmd->parsed()) return rollnoise::run_study(study);
+  } catch (const rollnoise::Interrupted& stopped) {
+    std::fprintf(stderr, "rollnoise: %s: stopped; the partial output was removed\n", stopped.what());
+    return stopped.exit_status();
   } catch (const rollnoise::InputError& error) {
     std::fprintf(stderr, "rollnoise: error: %s\n", error.what());
     return 2;
+  } catch (const rollnoise::OutputError& error) {
+    std::fprintf(stderr, "rollnoise: error: %s; the partial output was removed\n", error.what());
+    return 1;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "rollnoise: internal error: %s\n", error.what());
     return 1;

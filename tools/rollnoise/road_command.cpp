@@ -120,7 +120,7 @@ void write_road_csv(const fs::path& path, const LoadedProfile& p) {
     for (std::size_t j = 0; j < p.z_lines.size(); ++j) row[j + 1] = p.z_lines[j][i];
     csv.row(row.data(), row.size());
   }
-  if (!out) throw std::runtime_error("could not write " + path.string());
+  close_output_file(out, path);
 }
 
 void write_texture_csv(const fs::path& path, const std::vector<TextureBand>& bands) {
@@ -130,7 +130,7 @@ void write_texture_csv(const fs::path& path, const std::vector<TextureBand>& ban
     const double row[] = {b.nominal_wavelength_m, b.level_db};
     csv.row(row, 2);
   }
-  if (!out) throw std::runtime_error("could not write " + path.string());
+  close_output_file(out, path);
 }
 
 void plot_road(const fs::path& dir, const RoadUnderTest& road, bool with_target) {
@@ -221,6 +221,7 @@ int run_road(const RoadOptions& options) {
       const double row[] = {w, l};
       csv.row(row, 2);
     }
+    close_output_file(target, staged.staging() / "target.csv");
   }
   nlohmann::json summary;
   summary["input"] = options.input;

@@ -26,6 +26,8 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--set", options.overrides,
                   "Override a case value: section.key=value (value as TOML; bare words are strings). Repeatable")
       ->type_name("KEY=VALUE");
+  cmd->add_flag("--force", options.force,
+                "Run even when the estimate of the run's memory or output exceeds what the machine has");
   cmd->footer(
       "Example:\n  rollnoise simulate models/cases/larsson2000_sdof_sine.toml --out out/sdof "
       "--set rolling.static_load=3");
@@ -34,7 +36,9 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
 
 int run_simulate(const SimulateOptions& options) {
   const CaseFile file = CaseFile::load(options.case_file, options.overrides);
-  const CaseResult result = run_case(file, options.out);
+  CaseRunOptions run;
+  run.force = options.force;
+  const CaseResult result = run_case(file, options.out, run);
   std::printf("rollnoise: wrote %s (%s)\n", result.out.string().c_str(), result.written.c_str());
   return 0;
 }

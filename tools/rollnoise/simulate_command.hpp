@@ -13,6 +13,7 @@ struct SimulateOptions {
   std::string case_file;
   std::string out;  // empty: [output] directory, else out/<case name>
   std::vector<std::string> overrides;
+  bool force = false;  // run a case even when it looks too large for the machine
 };
 
 // Registers the verb on `app`; the options are filled in by the parser.

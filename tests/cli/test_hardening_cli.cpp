@@ -1,0 +1,175 @@
+// Issue 14 end to end: a run stopped by SIGINT or SIGTERM, a run whose disk fills, and a case
+// too large for the machine. The program is run as a user runs it (ROLLNOISE_BINARY).
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_workspace.hpp"
+
+namespace {
+using namespace cli_test;
+using Clock = std::chrono::steady_clock;
+
+const std::string sdof_case = std::string(ROLLNOISE_SOURCE_DIR) + "/models/cases/larsson2000_sdof_sine.toml";
+const std::string plate_case = std::string(ROLLNOISE_SOURCE_DIR) + "/models/cases/plate_smooth_80kmh.toml";
+
+// An earlier output in work()/result: what the stopped or failed run must leave as it was.
+void write_earlier_output(const Workspace& ws) {
+  fs::create_directories(ws.path("result"));
+  ws.write("result/summary.json", "{\"earlier\": true}\n");
+  ws.write("result/contact.csv", "time,road_1\n0,0\n");
+}
+
+void expect_earlier_output(const Workspace& ws) {
+  EXPECT_EQ(read_text(ws.path("result/summary.json")), "{\"earlier\": true}\n");
+  EXPECT_EQ(read_text(ws.path("result/contact.csv")), "time,road_1\n0,0\n");
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(ws.path("result"))) names.insert(entry.path().filename().string());
+  EXPECT_EQ(names, (std::set<std::string>{"contact.csv", "summary.json"}));
+}
+
+// Starts `rollnoise args...` in work(); stdout and stderr go to files beside work().
+pid_t start(const Workspace& ws, const std::vector<std::string>& args) {
+  const fs::path out = ws.work().parent_path() / "stdout.txt";
+  const fs::path err = ws.work().parent_path() / "stderr.txt";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(ws.work().c_str()) != 0) ::_exit(127);
+    if (!std::freopen("/dev/null", "r", stdin) || !std::freopen(out.c_str(), "w", stdout) ||
+        !std::freopen(err.c_str(), "w", stderr))
+      ::_exit(127);
+    std::vector<char*> argv;
+    std::string binary = ROLLNOISE_BINARY;
+    argv.push_back(binary.data());
+    std::vector<std::string> copies(args);
+    for (std::string& a : copies) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(binary.c_str(), argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The staging folder of a run writing work()/result: ".result.partial-PID".
+fs::path staging_of(const Workspace& ws, pid_t pid) {
+  return ws.work() / (".result.partial-" + std::to_string(pid));
+}
+
+// Sends `signal_number` to a simulate run once it is in its time-step loop (its staging folder
+// exists, then a little longer); checks that it stops within a second with 128 + the signal,
+// removes its staging folder and leaves the earlier output as it was.
+void stop_running_simulate(int signal_number) {
+  Workspace ws;
+  write_earlier_output(ws);
+  // About a minute of time steps for the direct history engine: the run is still going when
+  // the signal comes.
+  const pid_t pid = start(ws, {"simulate", sdof_case, "--out", "result", "--set", "rolling.duration=400",
+                               "--set", "rolling.time_step=1e-4", "--set", "output.plots=false"});
+  ASSERT_GT(pid, 0);
+  const auto deadline = Clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(staging_of(ws, pid)) && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(staging_of(ws, pid))) << "the run never created its staging folder";
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  int raw = 0;
+  ASSERT_EQ(::waitpid(pid, &raw, WNOHANG), 0) << "the run ended before the signal; make it longer";
+  const auto sent = Clock::now();
+  ASSERT_EQ(::kill(pid, signal_number), 0);
+  ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  const double seconds = std::chrono::duration<double>(Clock::now() - sent).count();
+  const std::string err = read_text(ws.work().parent_path() / "stderr.txt");
+  ASSERT_TRUE(WIFEXITED(raw)) << "killed by signal " << WTERMSIG(raw) << " instead of stopping; stderr: " << err;
+  EXPECT_EQ(WEXITSTATUS(raw), 128 + signal_number) << err;
+  EXPECT_LT(seconds, 1.0) << "took " << seconds << " s to stop";
+  EXPECT_TRUE(contains(err, signal_number == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM")) << err;
+  EXPECT_TRUE(contains(err, "the partial output was removed")) << err;  // not the watchdog
+  EXPECT_EQ(count_lines(err), 1u) << err;
+  EXPECT_FALSE(fs::exists(staging_of(ws, pid)));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+}
+
+TEST(InterruptedRun, SigintStopsSimulateWithin1sAndLeavesTheDestination) { stop_running_simulate(SIGINT); }
+
+TEST(InterruptedRun, SigtermStopsSimulateWithin1sAndLeavesTheDestination) { stop_running_simulate(SIGTERM); }
+
+// A file-size limit (ulimit -f, in 512-byte blocks for /bin/sh) stands in for a full disk: the
+// write fails the same way (EFBIG rather than ENOSPC), without root and without filling a disk.
+TEST(DiskFull, AWriteThatFailsGivesOneMessageRemovesThePartialOutputAndExits1) {
+  Workspace ws;
+  write_earlier_output(ws);
+  // contact.csv of 5001 steps is about 250 kB; the limit is 16 kB.
+  // --force: the estimate would refuse the run up front (OversizedCase below).
+  const RunResult r =
+      ws.run({"simulate", sdof_case, "--out", "result", "--set", "output.plots=false", "--force"}, "ulimit -f 32; ");
+  EXPECT_EQ(r.status, 1) << describe(r);
+  EXPECT_TRUE(contains(r.err, "cannot write ")) << r.err;
+  EXPECT_TRUE(contains(r.err, "contact.csv")) << r.err;
+  EXPECT_TRUE(contains(r.err, "File too large")) << r.err;
+  EXPECT_TRUE(contains(r.err, "file-size limit is full")) << r.err;
+  EXPECT_TRUE(contains(r.err, "the partial output was removed")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+  // The same run without the limit succeeds: the limit, not the case, made it fail.
+  const RunResult ok = ws.run({"simulate", sdof_case, "--out", "result", "--set", "output.plots=false"});
+  EXPECT_EQ(ok.status, 0) << describe(ok);
+}
+
+// A tyre run of a million seconds: about 5e10 steps over a 20 × 40 contact window, far beyond
+// any machine's memory and disk. Refused at once, naming the keys; --force would run it.
+TEST(OversizedCase, ATyreRunThatCannotFitIsRefusedInWellUnderASecond) {
+  Workspace ws;
+  const auto started = Clock::now();
+  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=1e6"});
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_LT(seconds, 0.5) << "took " << seconds << " s to refuse";
+  EXPECT_TRUE(contains(r.err, "of memory")) << r.err;
+  EXPECT_TRUE(contains(r.err, "[rolling] duration")) << r.err;
+  EXPECT_TRUE(contains(r.err, "points_lateral")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--force")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+// The output of a point run measured against the space it may take: under a file-size limit of
+// 16 kB its 250 kB contact.csv cannot be written, so the run is refused before it starts.
+TEST(OversizedCase, APointRunLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  const RunResult r = ws.run({"simulate", sdof_case, "--out", "result", "--set", "output.plots=false"}, "ulimit -f 32; ");
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "of output")) << r.err;
+  EXPECT_TRUE(contains(r.err, "[rolling] duration, [rolling] time_step")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  // --force runs it, and the write fails (DiskFull above); without the limit it fits.
+  const RunResult forced =
+      ws.run({"simulate", sdof_case, "--out", "result", "--set", "output.plots=false", "--force"}, "ulimit -f 32; ");
+  EXPECT_EQ(forced.status, 1) << describe(forced);
+  const RunResult ok = ws.run({"simulate", sdof_case, "--out", "result", "--set", "output.plots=false"});
+  EXPECT_EQ(ok.status, 0) << describe(ok);
+}
+
+TEST(OversizedCase, SizesWhoseProductOverflowsAreExitStatus2) {
+  // 9.1e14 steps × 20 lateral × 1016 around overflows 64 bits.
+  Workspace ws;
+  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=8e10"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "overflows 64 bits")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  const RunResult huge = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=1e300"});
+  EXPECT_EQ(huge.status, 2) << describe(huge);
+  EXPECT_EQ(count_lines(huge.err), 1u) << huge.err;
+}
+
+}  // namespace
