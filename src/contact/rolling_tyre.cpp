@@ -246,8 +246,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       shift_back[static_cast<std::size_t>(p)] = p - 1;
     }
   // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
-  // along the window keeps its factor, and products with it
-  // are convolutions along x; checked, not assumed.
+  // along the window keeps its factor, and products with it are convolutions along x; checked,
+  // not assumed.
   const bool shift_invariant = matrix_unchanged_by(g0, shift_back);
   // The lagged skew part acts through a convolution too (a dense product would stream G0 once
   // more per step).
@@ -339,7 +339,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     if (skew_product) {
       skew_product->apply(previous_force, skew_displacement);
       u0 += skew_displacement;
-    } else if (!whole_g0) {
+    } else if (!whole_g0 && skewness > 0.0) {
       u0.noalias() += g0_skew * previous_force;
     }
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
