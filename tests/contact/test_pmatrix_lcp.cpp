@@ -45,6 +45,23 @@ double kkt_violation(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const E
   return std::max({-z.minCoeff(), -w.minCoeff(), complementarity, 0.0}) / scale;
 }
 
+// M_AA⁻¹·(−q_A) on the indices A of `set` by a dense LU of the block, zero elsewhere: the
+// reference for one basic set.
+Eigen::VectorXd solve_on_set(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& set, const Eigen::VectorXd& q) {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(q.size());
+  const auto p = static_cast<Eigen::Index>(set.size());
+  if (p == 0) return z;
+  Eigen::MatrixXd block(p, p);
+  Eigen::VectorXd rhs(p);
+  for (Eigen::Index a = 0; a < p; ++a) {
+    rhs(a) = -q(set[a]);
+    for (Eigen::Index b = 0; b < p; ++b) block(a, b) = m(set[a], set[b]);
+  }
+  const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
+  for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
+  return z;
+}
+
 TEST(PMatrixLcp, AgreesWithEnumerationOfAllBasicSets) {
   // A P-matrix LCP has exactly one solution: the one basic set whose z ≥ 0 with w ≥ 0 off it.
   std::mt19937_64 rng(11);
@@ -58,18 +75,7 @@ TEST(PMatrixLcp, AgreesWithEnumerationOfAllBasicSets) {
       std::vector<Eigen::Index> set;
       for (Eigen::Index i = 0; i < n; ++i)
         if (mask & (1u << i)) set.push_back(i);
-      Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-      if (!set.empty()) {
-        const auto p = static_cast<Eigen::Index>(set.size());
-        Eigen::MatrixXd block(p, p);
-        Eigen::VectorXd rhs(p);
-        for (Eigen::Index a = 0; a < p; ++a) {
-          rhs(a) = -q(set[a]);
-          for (Eigen::Index b = 0; b < p; ++b) block(a, b) = m(set[a], set[b]);
-        }
-        const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
-        for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
-      }
+      const Eigen::VectorXd z = solve_on_set(m, set, q);
       const Eigen::VectorXd w = m * z + q;
       bool ok = true;
       for (Eigen::Index i = 0; i < n; ++i) ok = ok && z(i) >= -1e-12 && w(i) >= -1e-12;
@@ -115,19 +121,24 @@ struct Window {
   Eigen::Index index(int i, int j) const { return i + Eigen::Index{length} * j; }
 };
 
-Eigen::MatrixXd rolling_matrix(const Window& w) {
+// G(p, q) = kernel(x_p − x_q, y_p − y_q) in cells: translation invariant by construction.
+template <class Kernel>
+Eigen::MatrixXd window_matrix(const Window& w, Kernel&& kernel) {
   Eigen::MatrixXd m(w.points(), w.points());
   for (int ja = 0; ja < w.lateral; ++ja)
     for (int ia = 0; ia < w.length; ++ia)
       for (int jb = 0; jb < w.lateral; ++jb)
-        for (int ib = 0; ib < w.length; ++ib) {
-          const double dx = ia - ib, dy = ja - jb;
-          const double r = std::sqrt(dx * dx + dy * dy);
-          // Local compliance, a decaying coupling (a positive definite kernel), and a lag that
-          // leaves the symmetric part alone: the response trails the load (+x).
-          m(w.index(ia, ja), w.index(ib, jb)) = ((r == 0.0 ? 2.0 : 0.0) + std::exp(-r / 3.0)) * (1.0 + 0.15 * std::tanh(0.5 * dx));
-        }
+        for (int ib = 0; ib < w.length; ++ib) m(w.index(ia, ja), w.index(ib, jb)) = kernel(ia - ib, ja - jb);
   return m;
+}
+
+Eigen::MatrixXd rolling_matrix(const Window& w) {
+  return window_matrix(w, [](double dx, double dy) {
+    const double r = std::sqrt(dx * dx + dy * dy);
+    // Local compliance, a decaying coupling (a positive definite kernel), and a lag that leaves
+    // the symmetric part alone: the response trails the load (+x).
+    return ((r == 0.0 ? 2.0 : 0.0) + std::exp(-r / 3.0)) * (1.0 + 0.15 * std::tanh(0.5 * dx));
+  });
 }
 
 std::vector<Eigen::Index> shift_back(const Window& w) {
@@ -190,20 +201,13 @@ TEST(BorderedLu, SolvesSetsNearTheBaseAsADenseLuDoes) {
     std::vector<Eigen::Index> active;
     for (Eigen::Index i = 0; i < n; ++i)
       if (set[static_cast<std::size_t>(i)]) active.push_back(i);
-    const auto p = static_cast<Eigen::Index>(active.size());
-    Eigen::MatrixXd block(p, p);
-    Eigen::VectorXd rhs(p);
-    for (Eigen::Index a = 0; a < p; ++a) {
-      rhs(a) = -q(active[a]);
-      for (Eigen::Index b = 0; b < p; ++b) block(a, b) = (*m)(active[a], active[b]);
-    }
-    const Eigen::VectorXd expected = block.partialPivLu().solve(rhs);
+    const Eigen::VectorXd expected = solve_on_set(*m, active, q);
     for (Eigen::Index i = 0; i < n; ++i)
       if (!set[static_cast<std::size_t>(i)]) {
         ASSERT_EQ(z(i), 0.0);
       }
-    for (Eigen::Index a = 0; a < p; ++a)
-      ASSERT_NEAR(z(active[a]), expected(a), 1e-10 * expected.cwiseAbs().maxCoeff()) << "round " << round;
+    for (const Eigen::Index i : active)
+      ASSERT_NEAR(z(i), expected(i), 1e-10 * expected.cwiseAbs().maxCoeff()) << "round " << round;
   }
   // 180 flips in all, 40 at most kept: a few refactorisations, far fewer than solves.
   EXPECT_GE(lu.factorisations(), 2);
@@ -247,14 +251,9 @@ TEST(PMatrixLcp, WellConditionedSymmetricStepsByConjugateGradientsMatchTheFactor
   // A symmetric, strongly diagonally dominant window matrix (a Winkler tread under a belt): the
   // solver takes conjugate gradients with FFT products, and must give the factor's answers.
   const Window w;
-  Eigen::MatrixXd m(w.points(), w.points());
-  for (int ja = 0; ja < w.lateral; ++ja)
-    for (int ia = 0; ia < w.length; ++ia)
-      for (int jb = 0; jb < w.lateral; ++jb)
-        for (int ib = 0; ib < w.length; ++ib) {
-          const double dx = ia - ib, dy = ja - jb;
-          m(w.index(ia, ja), w.index(ib, jb)) = (dx == 0 && dy == 0 ? 5.0 : 0.0) + 0.02 * std::exp(-std::sqrt(dx * dx + dy * dy) / 4.0);
-        }
+  const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
+    return (dx == 0 && dy == 0 ? 5.0 : 0.0) + 0.02 * std::exp(-std::sqrt(dx * dx + dy * dy) / 4.0);
+  });
   const std::vector<Eigen::Index> shift = shift_back(w);
   ASSERT_TRUE(matrix_unchanged_by(m, shift));
   PMatrixLcpSolver iterative(m, 48, ContactWindow{w.length, w.lateral});
