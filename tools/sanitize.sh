@@ -27,9 +27,7 @@ filter=()
 targets=()
 if [[ ${1:-} == --readers ]]; then
   filter=(-R '^fuzz_replay\.')
-  for t in case_file model_file csv profile_csv laser height_map_hdf5 frf_csv uff wav modal_table_hdf5; do
-    targets+=(fuzz_replay_"$t")
-  done
+  targets=(fuzz_replays)  # every fuzz_replay_<target> of fuzz/CMakeLists.txt
 elif (($# > 0)); then
   filter=(-R "$1")
 fi
