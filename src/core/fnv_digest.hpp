@@ -30,6 +30,23 @@ class FnvDigest {
     unsigned_integer(s.size());
     bytes(s.data(), s.size());
   }
+  // FNV-1a over 8-byte little-endian words (the last one zero-padded), then the length: one
+  // mixing step per word instead of per byte, 8 times faster, for the caches' checksums of
+  // large files (radiation_cache.cpp), where it tells damage apart. Each step also folds the
+  // high half into the low one (h ^= h >> 32, invertible like the multiply): the multiply alone
+  // carries a change only upwards, so flips of the top bit of two words would cancel.
+  void words(const char* data, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+      std::uint64_t w = 0;
+      for (int b = 0; b < 8; ++b) w |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[i + static_cast<std::size_t>(b)])) << (8 * b);
+      mix_word(w);
+    }
+    std::uint64_t w = 0;
+    for (int b = 0; i < n; ++i, ++b) w |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[i])) << (8 * b);
+    mix_word(w);
+    unsigned_integer(n);
+  }
   std::uint64_t value() const noexcept { return hash_; }
   // 16 lower-case hex digits.
   std::string hex() const {
@@ -40,6 +57,11 @@ class FnvDigest {
   }
 
  private:
+  void mix_word(std::uint64_t w) {
+    hash_ ^= w;
+    hash_ *= 0x100000001b3ULL;
+    hash_ ^= hash_ >> 32;
+  }
   std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
 

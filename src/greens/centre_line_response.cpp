@@ -185,7 +185,8 @@ class TwoLayerCentreLine final : public CentreLineResponse {
 // and a table written from a two_layer model then gives that model's receptance.
 class TabulatedCentreLine final : public CentreLineResponse {
  public:
-  explicit TabulatedCentreLine(ModalReceptanceTable table) : fitted_(fit(std::move(table))) {
+  TabulatedCentreLine(ModalReceptanceTable table, const std::optional<std::filesystem::path>& cache)
+      : fitted_(fit(std::move(table), cache)) {
     const ModalReceptanceTable& t = fitted_.table();
     const double cell_length = t.circumference() / kCellsAround;
     const double cell_width = std::min(kCellWidth, t.width);  // a cell inside even a narrow strip
@@ -273,13 +274,13 @@ class TabulatedCentreLine final : public CentreLineResponse {
  private:
   // A table that passes validation may still defeat the fit (a mode that is zero somewhere,
   // too few frequencies): that is a fault of the file, named as such.
-  static FittedModalTyre fit(ModalReceptanceTable table) {
+  static FittedModalTyre fit(ModalReceptanceTable table, const std::optional<std::filesystem::path>& cache) {
     const std::string source = table.source;
     try {
       // Its fits through the cache, keyed by the table's content (fitted_modes_cache.hpp).
       const std::string key = fitted_modes_key(modal_table_content_key(table), tyre_mode_fit_options());
       bool from_cache = false;
-      return fit_with_cache(std::move(table), "tabulated", default_cache_directory(), key, from_cache);
+      return fit_with_cache(std::move(table), "tabulated", cache, key, from_cache);
     } catch (const std::invalid_argument& error) {
       throw InputError(source, "", std::string("its modes cannot be fitted with poles: ") + error.what());
     }
@@ -296,10 +297,15 @@ class TabulatedCentreLine final : public CentreLineResponse {
 }  // namespace
 
 std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model) {
+  return make_centre_line_response(model, default_cache_directory());
+}
+
+std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model,
+                                                              const std::optional<std::filesystem::path>& cache) {
   const std::string kind = model.choice("model", {"sdof", "coupled_sdof", "plate", "two_layer", "tabulated"});
   if (kind == "plate") return make_plate_centre_line(read_plate_tyre(model).plate);
   if (kind == "two_layer") return std::make_unique<TwoLayerCentreLine>(read_two_layer_tyre(model));
-  if (kind == "tabulated") return std::make_unique<TabulatedCentreLine>(read_tabulated_tyre(model));
+  if (kind == "tabulated") return std::make_unique<TabulatedCentreLine>(read_tabulated_tyre(model), cache);
   return std::make_unique<PointModelCentreLine>(make_greens_model(model));
 }
 

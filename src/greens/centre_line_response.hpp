@@ -67,7 +67,11 @@ class CentreLineResponse {
 // Builds the view of a model file (the keys of a [tyre] table at its top level) with the readers
 // `simulate` uses: unknown keys and unphysical values are InputErrors naming the file and key;
 // a `tabulated` table that cannot be read or fitted is an InputError naming the table's file.
+// A `tabulated` model's mode fits go through the cache folder `cache` (fitted_modes_cache.hpp;
+// none: not cached); without it, default_cache_directory().
 std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model);
+std::unique_ptr<CentreLineResponse> make_centre_line_response(const ConfigTable& model,
+                                                              const std::optional<std::filesystem::path>& cache);
 // The plate's view, for a plate already read (simulate draws its Fig. 5a from it).
 std::unique_ptr<CentreLineResponse> make_plate_centre_line(const PlateParameters& plate);
 

@@ -7,8 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include <unistd.h>
-
+#include "core/cache_folder.hpp"
 #include "core/fnv_digest.hpp"
 
 namespace rollnoise {
@@ -51,8 +50,7 @@ class Cursor {
 };
 
 fs::path file_of(const fs::path& directory, const std::string& key) {
-  if (key.empty() || key.front() == '.' ||
-      key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
+  if (!is_cache_key(key))
     throw std::invalid_argument("fitted modes cache: the key \"" + key + "\" is not a plain file name");
   return directory / (key + ".fits");
 }
@@ -135,15 +133,16 @@ void store_cached_fits(const fs::path& directory, const std::string& key, const 
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw std::runtime_error("cannot create the cache folder " + directory.string() + ": " + ec.message());
-  // A name of this process alone, so that two runs storing the same fits do not interleave.
-  const fs::path temporary = file.string() + ".tmp" + std::to_string(::getpid());
+  // A name of this writer alone (not only of this process: a study's threads store the same
+  // fits at once), renamed into place.
+  TemporaryFile temporary(file);
   {
-    std::ofstream o(temporary, std::ios::binary | std::ios::trunc);
+    std::ofstream o(temporary.path(), std::ios::binary | std::ios::trunc);
     o.write(out.data(), static_cast<std::streamsize>(out.size()));
-    if (!o) throw std::runtime_error("cannot write " + temporary.string());
+    o.close();
+    if (!o) throw std::runtime_error("cannot write " + temporary.path().string());
   }
-  fs::rename(temporary, file, ec);
-  if (ec) throw std::runtime_error("cannot rename " + temporary.string() + ": " + ec.message());
+  temporary.rename_to(file);
 }
 
 std::string modal_table_content_key(const ModalReceptanceTable& t) {

@@ -3,13 +3,13 @@
 #include <array>
 #include <bit>
 #include <cstdint>
-#include <cstdlib>
 #include <exception>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
+#include "core/cache_folder.hpp"
 #include "core/fnv_digest.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "greens/two_layer_tyre.hpp"
@@ -74,9 +74,7 @@ std::string key_of(const TwoLayerTyre& tyre, int orders, const Eigen::VectorXd& 
 }
 
 fs::path cache_file(const fs::path& directory, const std::string& key) {
-  const bool safe = !key.empty() && key.front() != '.' && key.find_first_not_of(
-      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") == std::string::npos;
-  if (!safe) {
+  if (!is_cache_key(key)) {
     throw std::invalid_argument("modal table cache: the key \"" + key +
                                 "\" is not a plain file name (letters, digits, '-', '_', '.')");
   }
@@ -105,17 +103,6 @@ bool matches(const ModalReceptanceTable& table, const TwoLayerTyre& tyre, int or
 }
 
 }  // namespace
-
-std::optional<fs::path> default_cache_directory() {
-  const auto variable = [](const char* name) -> std::string {
-    const char* value = std::getenv(name);
-    return value ? std::string(value) : std::string();
-  };
-  if (const std::string own = variable("ROLLNOISE_CACHE"); !own.empty()) return fs::path(own);
-  if (const fs::path xdg = variable("XDG_CACHE_HOME"); xdg.is_absolute()) return xdg / "rollnoise";
-  if (const std::string home = variable("HOME"); !home.empty()) return fs::path(home) / ".cache" / "rollnoise";
-  return std::nullopt;
-}
 
 std::string two_layer_table_key(const TwoLayerParameters& parameters, int orders, const Eigen::VectorXd& frequency_hz) {
   return key_of(TwoLayerTyre(parameters), orders, frequency_hz);

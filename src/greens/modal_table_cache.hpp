@@ -21,17 +21,13 @@
 
 #include <Eigen/Core>
 
+#include "core/cache_folder.hpp"  // default_cache_directory(), the folder shared by every cache
 #include "greens/modal_receptance_table.hpp"
 
 namespace rollnoise {
 
 class TwoLayerTyre;
 struct TwoLayerParameters;
-
-// The cache folder: $ROLLNOISE_CACHE if set (non-empty), else $XDG_CACHE_HOME/rollnoise (if
-// absolute, as the XDG specification asks), else $HOME/.cache/rollnoise; std::nullopt when none
-// of these is set (then nothing is cached).
-std::optional<std::filesystem::path> default_cache_directory();
 
 // "two_layer-" and 16 hex digits. std::invalid_argument for non-physical parameters (as
 // TwoLayerTyre), orders < 0 or no frequencies.

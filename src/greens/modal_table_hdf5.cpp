@@ -2,13 +2,13 @@
 
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "core/cache_folder.hpp"
 #include "core/child_process.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -25,38 +25,6 @@ constexpr std::size_t max_orders = std::size_t{1} << 20;
 constexpr std::size_t max_lateral_orders = std::size_t{1} << 16;
 
 const char* shape_name(LateralShape shape) { return shape == LateralShape::sine ? "sine" : "cosine"; }
-
-// Removes the temporary file unless the write was completed (renamed into place).
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const fs::path& target) {
-    std::random_device device;
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "." + string.
-    std::string name(1, '.');
-    name += target.filename().string();
-    name += ".tmp";
-    name += std::to_string(device());
-    name += std::to_string(device());
-    path_ = target.parent_path() / name;
-  }
-  ~TemporaryFile() {
-    std::error_code ec;
-    if (!kept_) fs::remove(path_, ec);
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  const fs::path& path() const noexcept { return path_; }
-  void rename_to(const fs::path& target) {
-    std::error_code ec;
-    fs::rename(path_, target, ec);
-    if (ec) throw std::runtime_error("cannot rename " + path_.string() + " to " + target.string() + ": " + ec.message());
-    kept_ = true;
-  }
-
- private:
-  fs::path path_;
-  bool kept_ = false;
-};
 
 // --- Reading -------------------------------------------------------------------------------
 

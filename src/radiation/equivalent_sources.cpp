@@ -459,25 +459,18 @@ Eigen::MatrixXcd EquivalentSources::power_matrix(double omega) const {
 // Split: S commutes with the group like V, so qᴴSq = Σ_c q_cᴴ S_c q_c with q_c = W_cᵀq and
 // S_c(a, b) = √(|O_a|/|O_b|) Σ_{y ∈ O_b} χ_c(g_y) S(r_a, y): the rows at the orbits'
 // representatives only.
-Eigen::VectorXd EquivalentSources::radiated_power(double omega, const Eigen::MatrixXcd& strengths) const {
-  if (strengths.rows() != sources_.cols()) throw std::invalid_argument("equivalent sources: one strength per source");
+std::vector<Eigen::MatrixXcd> EquivalentSources::power_blocks(double omega) const {
   const double k = omega / medium_.sound_speed;
   const double scale = omega * medium_.density * k * k * k / (4.0 * std::numbers::pi);
-  Eigen::VectorXd power = Eigen::VectorXd::Zero(strengths.cols());
-  if (!source_basis_) {
-    const Eigen::MatrixXcd sq = power_matrix(omega) * strengths;
-    for (Eigen::Index c = 0; c < strengths.cols(); ++c) power(c) = 0.5 * strengths.col(c).dot(sq.col(c)).real();
-    return power;
-  }
   const SymmetryBasis& basis = *source_basis_;
   const auto orbits = static_cast<Eigen::Index>(basis.orbits().size());
   Eigen::MatrixXcd rows(orbits, sources_.cols());  // S at the representatives' rows
   for (Eigen::Index j = 0; j < sources_.cols(); ++j)
     for (Eigen::Index a = 0; a < orbits; ++a)
       rows(a, j) = scale * power_entry(basis.orbits()[static_cast<std::size_t>(a)].members.front().point, j, k);
+  std::vector<Eigen::MatrixXcd> blocks;
   for (int c = 0; c < basis.characters(); ++c) {
     const std::vector<Eigen::Index>& block = basis.block(c);
-    if (block.empty()) continue;
     const auto size = static_cast<Eigen::Index>(block.size());
     Eigen::MatrixXcd s(size, size);
     for (Eigen::Index b = 0; b < size; ++b) {
@@ -490,11 +483,85 @@ Eigen::VectorXd EquivalentSources::radiated_power(double omega, const Eigen::Mat
         s(a, b) = std::sqrt(size_a / static_cast<double>(orbit.members.size())) * sum;
       }
     }
-    const Eigen::MatrixXcd q = basis.reduce(strengths, c);
+    blocks.push_back(std::move(s));
+  }
+  return blocks;
+}
+
+Eigen::VectorXd EquivalentSources::radiated_power(double omega, const Eigen::MatrixXcd& strengths) const {
+  if (strengths.rows() != sources_.cols()) throw std::invalid_argument("equivalent sources: one strength per source");
+  Eigen::VectorXd power = Eigen::VectorXd::Zero(strengths.cols());
+  if (!source_basis_) {
+    const Eigen::MatrixXcd sq = power_matrix(omega) * strengths;
+    for (Eigen::Index c = 0; c < strengths.cols(); ++c) power(c) = 0.5 * strengths.col(c).dot(sq.col(c)).real();
+    return power;
+  }
+  const std::vector<Eigen::MatrixXcd> blocks = power_blocks(omega);
+  for (int c = 0; c < source_basis_->characters(); ++c) {
+    const Eigen::MatrixXcd& s = blocks[static_cast<std::size_t>(c)];
+    if (s.size() == 0) continue;
+    const Eigen::MatrixXcd q = source_basis_->reduce(strengths, c);
     const Eigen::MatrixXcd sq = s * q;
     for (Eigen::Index col = 0; col < strengths.cols(); ++col) power(col) += 0.5 * q.col(col).dot(sq.col(col)).real();
   }
   return power;
+}
+
+Eigen::MatrixXcd pivoted_cholesky(const Eigen::MatrixXcd& s, double tolerance) {
+  const Eigen::Index n = s.rows();
+  if (s.cols() != n) throw std::invalid_argument("pivoted Cholesky: the matrix must be square");
+  Eigen::VectorXd diagonal = s.diagonal().real();
+  const double largest = n > 0 ? diagonal.maxCoeff() : 0.0;
+  Eigen::MatrixXcd l = Eigen::MatrixXcd::Zero(n, n);
+  std::vector<bool> taken(static_cast<std::size_t>(n), false);
+  Eigen::Index rank = 0;
+  while (rank < n) {
+    Eigen::Index pivot = -1;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!taken[static_cast<std::size_t>(i)] && (pivot < 0 || diagonal(i) > diagonal(pivot))) pivot = i;
+    // What is left is below the tolerance (or rounding made it negative): S is PSD, so the
+    // remainder's largest entry is on its diagonal and bounds the rest.
+    if (!(largest > 0.0) || !(diagonal(pivot) > tolerance * largest)) break;
+    const double root = std::sqrt(diagonal(pivot));
+    Eigen::VectorXcd column = s.col(pivot);
+    if (rank > 0) column.noalias() -= l.leftCols(rank) * l.row(pivot).head(rank).adjoint();
+    column /= root;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (taken[static_cast<std::size_t>(i)]) column(i) = 0.0;  // exact zeros above the pivots
+    column(pivot) = root;
+    l.col(rank) = column;
+    diagonal -= column.cwiseAbs2();
+    taken[static_cast<std::size_t>(pivot)] = true;
+    diagonal(pivot) = 0.0;
+    ++rank;
+  }
+  return l.leftCols(rank);
+}
+
+Eigen::MatrixXcd EquivalentSources::power_factor(double omega, double tolerance) const {
+  if (!source_basis_) return pivoted_cholesky(power_matrix(omega), tolerance).adjoint();
+  const std::vector<Eigen::MatrixXcd> blocks = power_blocks(omega);
+  const int characters = source_basis_->characters();
+  std::vector<Eigen::MatrixXcd> factors;
+  Eigen::Index rank = 0;
+  for (const Eigen::MatrixXcd& s : blocks) {
+    factors.push_back(pivoted_cholesky(s, tolerance));
+    rank += factors.back().cols();
+  }
+  // Character c's rows L_cᴴ·W_cᵀ (W_c the orthonormal basis, real): their transposes are
+  // W_c·conj(L_c), which expand() makes.
+  Eigen::MatrixXcd out(rank, sources_.cols());
+  Eigen::Index row = 0;
+  for (int c = 0; c < characters; ++c) {
+    const Eigen::MatrixXcd& l = factors[static_cast<std::size_t>(c)];
+    if (l.cols() == 0) continue;
+    std::vector<Eigen::MatrixXcd> parts;
+    for (int d = 0; d < characters; ++d)
+      parts.push_back(d == c ? Eigen::MatrixXcd(l.conjugate()) : Eigen::MatrixXcd::Zero(source_basis_->size(d), l.cols()));
+    out.middleRows(row, l.cols()) = source_basis_->expand(parts).transpose();
+    row += l.cols();
+  }
+  return out;
 }
 
 Eigen::MatrixXcd EquivalentSources::transfer(double omega, const Eigen::Matrix3Xd& receivers, double regularisation) const {

@@ -118,6 +118,19 @@ struct CombinedSources {
   double floor = 0.0;        // η₀, 1/m
 };
 
+// Stop the pivoted Cholesky factor of the power matrix when the largest pivot left is below this
+// fraction of S's largest diagonal entry. What is dropped is then below the rounding error of
+// qᴴSq itself, which is about ε·‖S‖·‖q‖² with ε = 2.2e-16 times the size: the factor's power
+// equals the full matrix's to rounding (tests/radiation/test_radiation_cache.cpp checks 1e-10).
+constexpr double kPowerFactorTolerance = 1e-15;
+
+// The pivoted (diagonal pivoting) Cholesky factor L (n × r) of a Hermitian positive
+// semidefinite S, S ≈ LLᴴ, stopped when the largest diagonal entry of the remainder falls to
+// `tolerance` times S's largest diagonal entry (Harbrecht, Peters & Schneider, "On the low-rank
+// approximation by the pivoted Cholesky decomposition", Appl. Numer. Math. 62, 2012: the
+// remainder's trace is bounded by the pivots left). Costs O(n·r²): cheap when S has low rank.
+Eigen::MatrixXcd pivoted_cholesky(const Eigen::MatrixXcd& s, double tolerance);
+
 class EquivalentSources {
  public:
   // automatic: split the solve by the mirrors y → −y and x → −x, each when the sources and the
@@ -160,6 +173,13 @@ class EquivalentSources {
   Eigen::MatrixXcd power_matrix(double omega) const;
   // ½ Re qᴴSq for each column of `strengths` (Ns × K), W; by the symmetry blocks when split.
   Eigen::VectorXd radiated_power(double omega, const Eigen::MatrixXcd& strengths) const;
+  // A factor F (r × Ns) of the power matrix, S ≈ FᴴF, so that W = ½‖Fq‖²: the pivoted Cholesky
+  // factor (pivoted_cholesky below) of S, or of each symmetry block S_c when split (its rows
+  // then act on character c only). r is S's numerical rank at `tolerance`: few rows at low
+  // frequency, where few source patterns radiate. With the solve's transfer() it makes the
+  // power an operator on the surface velocities, W = ½‖(F·V⁺)v‖², that does not depend on them
+  // (what the radiation cache stores, radiation_cache.hpp).
+  Eigen::MatrixXcd power_factor(double omega, double tolerance = kPowerFactorTolerance) const;
 
   Eigen::Index source_count() const { return sources_.cols(); }
   bool combined_sources() const noexcept { return coupling_ > 0.0; }
@@ -183,6 +203,8 @@ class EquivalentSources {
   Eigen::MatrixXcd velocity_matrix(double k, const std::vector<Eigen::Index>& rows) const;
   // S_ij/(ωρk³/4π) (power_matrix).
   std::complex<double> power_entry(Eigen::Index i, Eigen::Index j, double k) const;
+  // S_c per character of the source basis (split only).
+  std::vector<Eigen::MatrixXcd> power_blocks(double omega) const;
 
   Eigen::Matrix3Xd sources_, surface_, normals_;
   Eigen::Matrix3Xd source_normals_;  // combined sources (zero for monopoles)

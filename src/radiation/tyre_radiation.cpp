@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -37,13 +38,25 @@ constexpr double kNyquistFraction = 0.99;
 // version of the split mesh, 7.3 % against 3.5 % at 5.3 kHz relative to the exact pressure).
 constexpr double kCouplingFloor = 50.0;
 
-// What one anchor's solve gives: the transfer to the receivers, and its hat-weighted share of
-// the power of the bins around it.
+// Raise when a change of the stage's solve changes the operators it stores: old cache entries
+// then miss (radiation_cache.hpp). The key digests the inputs; this marks the code.
+constexpr int kAnchorSolveRevision = 1;
+
+// What one anchor gives: the transfer to the receivers, and its hat-weighted share of the power
+// of the bins around it.
 struct AnchorResult {
   Eigen::MatrixXcd transfer;         // R × A
   std::vector<Eigen::Index> bins;    // indices into the band's bins
   std::vector<double> power;         // W, weighted
+  bool from_cache = false;
+  Eigen::Index power_rank = 0;
 };
+
+void digest_points(FnvDigest& d, const Eigen::Matrix3Xd& m) {
+  d.integer(m.cols());
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < 3; ++i) d.real(m(i, j));
+}
 
 }  // namespace
 
@@ -93,7 +106,13 @@ TyreRadiation::TyreRadiation(const TyreRadiationSettings& settings, Eigen::Matri
     TyreSurfaceMesh mesh = make_tyre_surface_mesh(level.spec);
     EquivalentSources monopoles = make_tyre_model(mesh, settings_.medium, false);
     EquivalentSources combined = make_tyre_model(mesh, settings_.medium, true);
-    levels_.push_back({level.top_hz, level.spec, std::move(mesh), std::move(monopoles), std::move(combined), {}});
+    // The geometry the solve sees, to the bit: whatever in the spec, the deformation or the
+    // band's rule shaped the mesh acts through these (and the areas, which the solve does not use,
+    // are left out).
+    FnvDigest geometry;
+    for (const Eigen::Matrix3Xd* m : {&mesh.points, &mesh.normals, &mesh.sources, &mesh.source_normals}) digest_points(geometry, *m);
+    geometry.integer(mesh.tread_points);
+    levels_.push_back({level.top_hz, level.spec, std::move(mesh), std::move(monopoles), std::move(combined), {}, geometry});
   }
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) levels_[l].from_input = tread_to_tread_matrix(input_mesh(), levels_[l].mesh);
   centre_ = Eigen::Vector3d(0.0, 0.0, input_mesh().axle_height);
@@ -119,8 +138,42 @@ std::vector<double> TyreRadiation::anchors(double sample_rate) const {
   return out;
 }
 
+std::string TyreRadiation::anchor_key(std::size_t level, double anchor_hz, Eigen::Index columns) const {
+  FnvDigest d = levels_.at(level).geometry;
+  d.text(kRadiationCacheLayout);
+  d.integer(kAnchorSolveRevision);
+  d.integer(columns);
+  digest_points(d, receivers_);
+  d.real(settings_.medium.density);
+  d.real(settings_.medium.sound_speed);
+  d.real(anchor_hz);
+  d.real(settings_.regularisation);
+  const bool combined = anchor_hz > settings_.combined_sources_above_hz;
+  d.integer(combined ? 1 : 0);
+  if (combined) {
+    d.real(1.0);  // η of make_tyre_model
+    d.real(kCouplingFloor);
+  }
+  d.real(kPowerFactorTolerance);
+  // make_tyre_model's choices: the rigid road, the automatic symmetry split, the automatic
+  // least-squares method and unweighted collocation.
+  d.text("rigid plane; symmetry automatic; least squares automatic; unweighted");
+  return kRadiationCachePrefix + d.hex();
+}
+
+AnchorOperators TyreRadiation::solve_anchor(std::size_t level_index, double anchor_hz, Eigen::Index columns) const {
+  const Level& level = levels_.at(level_index);
+  const double omega = kTwoPi * anchor_hz;
+  const EquivalentSources& model = anchor_hz > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
+  const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
+  AnchorOperators out;
+  out.transfer = solve.transfer(model.pressure_matrix(omega, receivers_)).leftCols(columns);
+  out.power = solve.transfer(model.power_factor(omega)).leftCols(columns);
+  return out;
+}
+
 RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, double sample_rate,
-                                     ProgressReporter* progress) const {
+                                     ProgressReporter* progress, const RadiationCache* cache) const {
   const Eigen::Index active = surface_velocity.cols();
   const TyreSurfaceMesh& input = input_mesh();
   if (active != input.tread_points && !(active == input.points.cols() && levels_.size() == 1))
@@ -159,6 +212,11 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   const double power_scale = 4.0 / (static_cast<double>(samples) * length);
   std::vector<AnchorResult> results(anchor.size());
   std::vector<double> seconds(anchor.size(), 0.0);
+  // The operators' columns on each level: the tread (the velocities' own columns on the input
+  // mesh, which may be every point when one mesh serves every anchor).
+  const auto columns_of = [&](std::size_t level) {
+    return level + 1 == levels_.size() ? active : static_cast<Eigen::Index>(levels_[level].mesh.tread_points);
+  };
   const auto solve_anchor = [&](std::size_t a) {
     const auto started = std::chrono::steady_clock::now();
     struct Clock {
@@ -166,37 +224,54 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
       double& seconds;
       ~Clock() { seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
     } clock{started, seconds[a]};
-    const double omega = kTwoPi * anchor[a];
-    const Level& level = levels_[level_of(anchor[a])];
+    const std::size_t level_index = level_of(anchor[a]);
+    const Level& level = levels_[level_index];
     const bool own = &level == &levels_.back();  // the input mesh itself
-    const EquivalentSources& model = anchor[a] > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
-    const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
     AnchorResult& out = results[a];
-    const Eigen::MatrixXcd transfer = solve.transfer(model.pressure_matrix(omega, receivers_));
+    // From the cache when it has the anchor (loaded here, in the worker, so that only the
+    // anchors in hand are in memory), else solved and stored.
+    const std::string key = cache ? anchor_key(level_index, anchor[a], columns_of(level_index)) : std::string();
+    std::optional<AnchorOperators> cached;
+    if (cache) cached = cache->load(key, receivers_.cols(), columns_of(level_index));
+    AnchorOperators operators;
+    if (cached) {
+      operators = std::move(*cached);
+      out.from_cache = true;
+    } else {
+      operators = this->solve_anchor(level_index, anchor[a], columns_of(level_index));
+      if (cache) {
+        const AnchorDescription description{anchor[a], level.mesh.points.cols(), level.mesh.sources.cols(), level.spec.tread_split,
+                                            level.spec.sidewall_rings,
+                                            anchor[a] > settings_.combined_sources_above_hz ? "combined" : "monopoles"};
+        cache->store(key, operators, description);
+      }
+    }
+    out.power_rank = operators.power.rows();
     if (own)
-      out.transfer = transfer.leftCols(active);
+      out.transfer = std::move(operators.transfer);
     else
-      out.transfer = transfer.leftCols(level.mesh.tread_points) * level.from_input;
+      out.transfer = operators.transfer * level.from_input;
     const double below = a > 0 ? anchor[a - 1] : anchor[a];
     const double above = a + 1 < anchor.size() ? anchor[a + 1] : anchor[a];
     for (Eigen::Index b = 0; b < band; ++b)
       if (frequency(b) >= below && frequency(b) <= above && (frequency(b) > below || a == 0)) out.bins.push_back(b);
     if (out.bins.empty()) return;
-    Eigen::MatrixXcd velocities = Eigen::MatrixXcd::Zero(level.mesh.points.cols(), static_cast<Eigen::Index>(out.bins.size()));
+    Eigen::MatrixXcd velocities(operators.power.cols(), static_cast<Eigen::Index>(out.bins.size()));
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const auto c = static_cast<Eigen::Index>(i);
       if (own)
-        velocities.col(c).head(active) = spectra.col(out.bins[i]);
+        velocities.col(c) = spectra.col(out.bins[i]);
       else
-        velocities.col(c).head(level.mesh.tread_points) = level.from_input * spectra.col(out.bins[i]);
+        velocities.col(c) = level.from_input * spectra.col(out.bins[i]);
     }
-    const Eigen::VectorXd power = model.radiated_power(omega, solve.strengths(velocities));
+    // W = ½‖Qv‖² (EquivalentSources::power_factor).
+    const Eigen::MatrixXcd amplitudes = operators.power * velocities;
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const double f = frequency(out.bins[i]);
       const double hat = f < anchor[a] ? (f - below) / (anchor[a] - below)
                          : f > anchor[a] ? (above - f) / (above - anchor[a])
                                          : 1.0;
-      out.power.push_back(hat * power_scale * power(static_cast<Eigen::Index>(i)));
+      out.power.push_back(hat * power_scale * 0.5 * amplitudes.col(static_cast<Eigen::Index>(i)).squaredNorm());
     }
   };
 
@@ -243,6 +318,10 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   out.anchors_hz = anchor;
   for (double f : anchor) out.anchor_mesh.push_back(level_of(f));
   out.anchor_seconds = seconds;
+  for (const AnchorResult& r : results) {
+    out.anchor_from_cache.push_back(r.from_cache);
+    out.anchor_power_rank.push_back(r.power_rank);
+  }
   out.frequency_hz.resize(band);
   for (Eigen::Index b = 0; b < band; ++b) out.frequency_hz(b) = frequency(b);
   out.sound_power_w = Eigen::VectorXd::Zero(band);

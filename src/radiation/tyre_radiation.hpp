@@ -29,14 +29,24 @@
 // area-weighted means (tread_to_tread_matrix), which equals sampling the belt onto the coarser
 // mesh directly, and each anchor's transfer is carried back to the input mesh's cells.
 //
+// What each anchor solves (AnchorOperators, radiation_cache.hpp) does not depend on the
+// velocities: the transfer to the receivers and the power operator Q of the anchor's level mesh,
+// W = ½‖Qv‖² (EquivalentSources::power_factor). They are solved first and applied to the
+// velocities after, and with a RadiationCache they are loaded from and stored to disk, keyed by
+// anchor_key(); the stage applies loaded and solved operators the same way, so a run from the
+// cache gives the same numbers bit for bit.
+//
 // Determinism: every anchor is solved the same way whatever thread solves it, and the results
 // are combined in anchor order, so the numbers do not depend on the thread count.
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "core/fnv_digest.hpp"
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/radiation_cache.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 
 namespace rollnoise {
@@ -80,6 +90,8 @@ struct RadiatedSound {
   std::vector<double> anchors_hz;      // the anchors solved,
   std::vector<std::size_t> anchor_mesh;  // the mesh level each took (TyreRadiation::level_of)
   std::vector<double> anchor_seconds;  // and the wall time of each in its thread (not part of the results)
+  std::vector<bool> anchor_from_cache;  // whether each anchor's operators came from the cache
+  std::vector<Eigen::Index> anchor_power_rank;  // rows of each anchor's power operator
 };
 
 // One band's mesh (the rule above).
@@ -111,8 +123,16 @@ class TyreRadiation {
   // surface_velocity: samples × A normal velocities (m/s, outward) of the first A collocation
   // points of mesh() (A = mesh().tread_points, the sidewalls at rest; or all of them when there
   // is a single level), sampled at `sample_rate`. progress (optional) counts anchors.
+  // cache (optional): the anchors' operators are loaded from it when there, and stored in it
+  // when solved.
   RadiatedSound radiate(const Eigen::MatrixXd& surface_velocity, double sample_rate,
-                        ProgressReporter* progress = nullptr) const;
+                        ProgressReporter* progress = nullptr, const RadiationCache* cache = nullptr) const;
+
+  // The key of the cache entry of an anchor (radiation_cache.hpp) on mesh level `level`, with
+  // operators over the level mesh's first `columns` collocation points.
+  std::string anchor_key(std::size_t level, double anchor_hz, Eigen::Index columns) const;
+  // An anchor's operators, solved (what radiate() stores in and loads from the cache).
+  AnchorOperators solve_anchor(std::size_t level, double anchor_hz, Eigen::Index columns) const;
 
  private:
   struct Level {
@@ -121,6 +141,7 @@ class TyreRadiation {
     TyreSurfaceMesh mesh;
     EquivalentSources monopoles, combined;
     Eigen::SparseMatrix<double> from_input;  // tread cells of the input mesh → this mesh's (not for the input's own)
+    FnvDigest geometry;  // the mesh's points, normals and sources to the bit (anchor_key)
   };
   TyreRadiationSettings settings_;
   std::vector<Level> levels_;

@@ -4,9 +4,12 @@
 // one folder. What `rollnoise simulate` and `rollnoise study` call; it prints nothing but
 // warnings, so the callers decide what to say.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "core/cache_folder.hpp"
 
 namespace rollnoise {
 
@@ -24,6 +27,10 @@ struct CaseRunOptions {
   // Run even when the estimate of the run's memory or output exceeds what the machine has
   // (run_size.hpp); otherwise such a case is refused before it starts.
   bool force = false;
+  // The cache folder of every cache the run uses (core/cache_folder.hpp: the two-layer tables,
+  // the mode fits, the radiation's anchor operators); std::nullopt: none. The command line
+  // resolves --cache and --no-cache into this (usable_cache_folder).
+  std::optional<std::filesystem::path> cache = default_cache_directory();
 };
 
 struct CaseResult {

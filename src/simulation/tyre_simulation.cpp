@@ -244,7 +244,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   const ConfigTable rolling = file.section("rolling");
   const ConfigTable output = file.optional_section("output");
 
-  const RollingTyreModel model = read_rolling_tyre_model(tyre, default_cache_directory());
+  const RollingTyreModel model = read_rolling_tyre_model(tyre, options.cache);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   output.text("directory", "");
@@ -350,6 +350,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   }
   // The belt onto the radiation's input mesh: the finest of its bands' meshes (tyre_radiation.hpp).
   sound.radiation.sample_rate_hz = 1.0 / dt;
+  sound.cache_folder = options.cache;
   const Eigen::SparseMatrix<double> sampling = belt_to_tread_matrix(
       grid.circumferential, grid.lateral,
       make_tyre_surface_mesh(sound.enabled ? radiation_mesh_levels(sound.radiation).back().spec : sound.radiation.mesh));
@@ -369,7 +370,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                    &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
   if (plots) {
     plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", trace.time(snapshot));
-    write_greens_circumference(staged.staging(), *make_centre_line_response(tyre), grid.circumferential);
+    write_greens_circumference(staged.staging(), *make_centre_line_response(tyre, options.cache), grid.circumferential);
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 

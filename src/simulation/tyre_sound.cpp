@@ -138,7 +138,9 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   const TyreRadiation radiation(settings.radiation, positions);
   std::optional<ProgressReporter> bar;
   if (progress) bar.emplace("radiation " + source, radiation.anchors(sample_rate).size());
-  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, bar ? &*bar : nullptr);
+  std::optional<RadiationCache> cache;
+  if (settings.cache_folder) cache.emplace(*settings.cache_folder);
+  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, bar ? &*bar : nullptr, cache ? &*cache : nullptr);
   if (bar) bar->finish();
   const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
@@ -210,12 +212,15 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   // The meshes per band (coarse to fine; the last is the one the velocities come in on).
   nlohmann::json meshes = nlohmann::json::array();
   for (std::size_t l = 0; l < radiation.levels(); ++l) {
-    std::size_t anchors = 0;
+    std::size_t anchors = 0, from_cache = 0;
     double seconds = 0.0;
+    Eigen::Index rank = 0;
     for (std::size_t a = 0; a < sound.anchor_mesh.size(); ++a)
       if (sound.anchor_mesh[a] == l) {
         ++anchors;
         seconds += sound.anchor_seconds[a];
+        from_cache += sound.anchor_from_cache[a] ? 1 : 0;
+        rank = std::max(rank, sound.anchor_power_rank[a]);
       }
     meshes.push_back({{"collocation_points", radiation.level_mesh(l).points.cols()},
                       {"equivalent_sources", radiation.level_mesh(l).sources.cols()},
@@ -223,9 +228,16 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
                       {"sidewall_rings", radiation.level_spec(l).sidewall_rings},
                       {"up_to_hz", radiation.level_top_hz(l)},
                       {"anchors", anchors},
+                      {"anchors_from_cache", from_cache},
+                      {"largest_power_rank", rank},  // rows of the power operator (radiation_cache.hpp)
                       {"anchor_time_s", seconds}});  // summed over the anchors, each in its thread
   }
+  const bool deformed = settings.radiation.mesh.geometry == TyreGeometry::deformed;
   result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
+                         // The patch the body is flattened over: steady rolling on a smooth road
+                         // (tyre_simulation.cpp, docs/radiation_cache.md), not the run's mean.
+                         {"patch_length_m", deformed ? settings.radiation.mesh.deformation.patch_length : 0.0},
+                         {"patch_width_m", deformed ? settings.radiation.mesh.deformation.patch_width : 0.0},
                          {"flat_length_m", flat_x1 - flat_x0},
                          {"flat_width_m", flat_y1 - flat_y0},
                          {"anchors", radiation.anchors(sample_rate).size()},
@@ -234,6 +246,8 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
                          {"meshes", meshes},
                          {"geometry", settings.radiation.mesh.geometry == TyreGeometry::deformed ? "deformed" : "undeformed"},
                          {"axle_height_m", radiation.mesh().axle_height},
+                         {"anchors_from_cache", std::count(sound.anchor_from_cache.begin(), sound.anchor_from_cache.end(), true)},
+                         {"cache", settings.cache_folder ? settings.cache_folder->string() : std::string()},
                          {"time_s", radiation_seconds}};
   return result;
 }

@@ -3,6 +3,7 @@
 // (src/radiation), their spectra and levels (sound_report.hpp), calibrated WAV files at an audio
 // rate (src/audio), a pass-by at the SPB microphone, and the radiated sound power.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct TyreSoundSettings {
   bool wav = true;
   double audio_rate = 48000.0;  // Hz: 48000 or 44100
   double wav_duration = 5.0;    // s, at least 5: a shorter run is looped
+  // The cache of the radiation's anchor operators (radiation/radiation_cache.hpp): none, or
+  // the cache folder (core/cache_folder.hpp). Not a case key: the command line chooses it.
+  std::optional<std::filesystem::path> cache_folder;
 };
 
 // [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,

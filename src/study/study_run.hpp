@@ -6,9 +6,11 @@
 // the caller removes cases/ first (`--restart`).
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/cache_folder.hpp"
 #include "study/study_cases.hpp"
 #include "study/study_file.hpp"
 
@@ -21,6 +23,8 @@ struct StudyRunOptions {
   int threads = 0;            // cases side by side on this rank; 0: one per core (one under mpirun)
   bool fail_fast = false;     // stop starting cases after the first failure
   bool progress = true;       // cases done, with an ETA, on a terminal (not in CI)
+  // The cache folder the cases share (CaseRunOptions::cache); std::nullopt: none.
+  std::optional<std::filesystem::path> cache = default_cache_directory();
 };
 
 struct CaseOutcome {

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/output_directory.hpp"
 #include "analyse_command.hpp"
+#include "cache_command.hpp"
 #include "calibrate_command.hpp"
 #include "greens_command.hpp"
 #include "road_command.hpp"
@@ -48,6 +49,10 @@ int main(int argc, char** argv) {
   CLI::App* greens_cmd = rollnoise::add_greens_command(app, greens);
   rollnoise::StudyOptions study;
   CLI::App* study_cmd = rollnoise::add_study_command(app, study);
+  rollnoise::CacheOptions cache;
+  CLI::App* cache_list = nullptr;
+  CLI::App* cache_clear = nullptr;
+  rollnoise::add_cache_command(app, cache, cache_list, cache_clear);
 
   // An unknown verb is named as such (CLI11 would only say that a verb is required).
   const auto is_verb = [&app](const std::string& word) {
@@ -56,7 +61,7 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road, greens, study (see 'rollnoise --help')\n",
+    std::fprintf(stderr, "rollnoise: error: command line: unknown verb '%s'; verbs are: simulate, analyse, calibrate, road, greens, study, cache (see 'rollnoise --help')\n",
                  argv[1]);
     return 2;
   }
@@ -78,6 +83,8 @@ int main(int argc, char** argv) {
     if (road_cmd->parsed()) return rollnoise::run_road(road);
     if (greens_cmd->parsed()) return rollnoise::run_greens(greens);
     if (study_cmd->parsed()) return rollnoise::run_study(study);
+    if (cache_list->parsed()) return rollnoise::run_cache_list(cache);
+    if (cache_clear->parsed()) return rollnoise::run_cache_clear(cache);
   } catch (const rollnoise::Interrupted& stopped) {
     std::fprintf(stderr, "rollnoise: %s: stopped; the partial output was removed\n", stopped.what());
     return stopped.exit_status();

@@ -1,5 +1,5 @@
 #pragma once
-// `rollnoise simulate CASE.toml [--out DIR] [--set section.key=value]...`
+// `rollnoise simulate CASE.toml [--out DIR] [--set section.key=value]... [--cache DIR | --no-cache]`
 #include <string>
 #include <vector>
 
@@ -14,6 +14,8 @@ struct SimulateOptions {
   std::string out;  // empty: [output] directory, else out/<case name>
   std::vector<std::string> overrides;
   bool force = false;  // run a case even when it looks too large for the machine
+  std::string cache;   // --cache DIR (empty: the default folder, core/cache_folder.hpp)
+  bool no_cache = false;
 };
 
 // Registers the verb on `app`; the options are filled in by the parser.

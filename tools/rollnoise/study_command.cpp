@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cache_command.hpp"
+#include "core/cache_folder.hpp"
 #include "core/error.hpp"
 #include "study/mpi_session.hpp"
 #include "study/study_cases.hpp"
@@ -28,6 +30,7 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
   cmd->add_option("--out", options.out, "Output folder (default: out/<study name>)");
   cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
+  add_cache_options(*cmd, options.cache, options.no_cache);
   cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails");
   cmd->add_flag("--restart", options.restart, "Run every case again, also those an earlier run finished");
   cmd->add_flag("--yes", options.yes,
@@ -60,6 +63,8 @@ int run_study(const StudyOptions& options) {
   run.out = out;
   run.threads = options.threads;
   run.fail_fast = options.fail_fast;
+  // Resolved once for the whole study, so that a folder that cannot be written is one warning.
+  run.cache = usable_cache_folder(options.cache, options.no_cache);
   const std::vector<CaseOutcome> outcomes = run_study_cases(spec, cases, run, mpi);
   if (mpi.rank() != 0) return 0;
 

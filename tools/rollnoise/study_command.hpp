@@ -1,5 +1,6 @@
 #pragma once
-// `rollnoise study STUDY.toml [--out DIR] [--threads N] [--fail-fast] [--restart] [--yes]`
+// `rollnoise study STUDY.toml [--out DIR] [--threads N] [--fail-fast] [--restart] [--yes]
+//                  [--cache DIR | --no-cache]`
 #include <string>
 
 namespace CLI {
@@ -15,6 +16,8 @@ struct StudyOptions {
   bool fail_fast = false;
   bool restart = false;
   bool yes = false;
+  std::string cache;  // --cache DIR (empty: the default folder)
+  bool no_cache = false;
 };
 
 // Above this many cases a study asks for --yes (a typo in a list can make thousands).

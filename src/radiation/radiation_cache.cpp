@@ -1,0 +1,217 @@
+#include "radiation/radiation_cache.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include "core/cache_folder.hpp"
+#include "core/error.hpp"
+#include "core/fnv_digest.hpp"
+#include "core/hdf5_reader.hpp"
+#include "core/hdf5_writer.hpp"
+
+namespace rollnoise {
+namespace fs = std::filesystem;
+namespace {
+
+// At most this many rows of power operator: the power matrix's rank is at most the source
+// count, and a damaged dimension must not make the reader allocate wildly.
+constexpr std::size_t kMaxPowerRows = std::size_t{1} << 16;
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+void digest_matrix(FnvDigest& d, const Eigen::MatrixXcd& m) {
+  d.integer(m.rows());
+  d.integer(m.cols());
+  // Column by column, real and imaginary parts interleaved: the matrix's own memory.
+  d.words(reinterpret_cast<const char*>(m.data()), sizeof(std::complex<double>) * static_cast<std::size_t>(m.size()));
+}
+
+// One complex matrix from its two datasets, C order [rows][cols]; `rows` 0: any up to the bound.
+Eigen::MatrixXcd read_complex(const Hdf5Reader& file, const std::string& name, std::size_t rows, std::size_t columns) {
+  const std::size_t max_rows = rows ? rows : kMaxPowerRows;
+  const Hdf5Array re = file.read_numbers("/" + name + "_re", 2, max_rows * columns);
+  const Hdf5Array im = file.read_numbers("/" + name + "_im", 2, max_rows * columns);
+  if (re.dims.size() != 2 || re.dims != im.dims || re.dims[1] != columns || (rows && re.dims[0] != rows))
+    throw InputError(file.source(), "/" + name, "has dimensions other than the entry's key asks for");
+  const auto r = static_cast<Eigen::Index>(re.dims[0]);
+  const auto c = static_cast<Eigen::Index>(re.dims[1]);
+  Eigen::MatrixXcd out(r, c);
+  out.real() = Eigen::Map<const RowMajor>(re.values.data(), r, c);
+  out.imag() = Eigen::Map<const RowMajor>(im.values.data(), r, c);
+  return out;
+}
+
+AnchorOperators read_entry(const fs::path& path, const std::string& key, Eigen::Index receivers, Eigen::Index columns) {
+  const Hdf5Reader file(path);
+  const std::optional<std::string> layout = file.string_attribute("/", "layout");
+  if (!layout || *layout != kRadiationCacheLayout)
+    throw InputError(path.string(), "/ attribute layout", "is not \"" + std::string(kRadiationCacheLayout) + "\"");
+  const std::optional<std::string> stored_key = file.string_attribute("/", "key");
+  if (!stored_key || *stored_key != key)
+    throw InputError(path.string(), "/ attribute key", "is not the entry's own key (a foreign file)");
+  const std::optional<std::string> checksum = file.string_attribute("/", "checksum");
+  AnchorOperators out;
+  out.transfer = read_complex(file, "transfer", static_cast<std::size_t>(receivers), static_cast<std::size_t>(columns));
+  out.power = read_complex(file, "power", 0, static_cast<std::size_t>(columns));
+  if (!checksum || *checksum != radiation_entry_checksum(key, out))
+    throw InputError(path.string(), "/ attribute checksum", "does not match the content (a damaged file)");
+  return out;
+}
+
+// The trailer after the HDF5 bytes: a magic and a checksum of every byte before it, so that a
+// damaged or truncated file is told before the HDF5 library reads any of it (that library can
+// crash on damaged metadata; reading in a child process instead, as modal_table_hdf5 does, can
+// hang when another thread holds the library's lock at the fork, as a study's other cases
+// writing contact.h5 do). HDF5 ignores bytes past the end address its superblock records.
+constexpr char kTrailerMagic[8] = {'R', 'N', 'C', 'A', 'C', 'H', 'E', '1'};
+constexpr std::size_t kTrailerSize = 16;
+
+std::uint64_t file_checksum(const std::string& bytes, std::size_t n) {
+  FnvDigest d;
+  d.words(bytes.data(), n);
+  return d.value();
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error("cannot read it");
+  return bytes;
+}
+
+void check_file_trailer(const fs::path& path) {
+  const std::string bytes = read_bytes(path);
+  if (bytes.size() < kTrailerSize || bytes.compare(bytes.size() - kTrailerSize, 8, kTrailerMagic, 8) != 0)
+    throw std::runtime_error("no checksum trailer: truncated, or not a cache entry");
+  std::uint64_t stored = 0;
+  for (int i = 0; i < 8; ++i)
+    stored |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[bytes.size() - 8 + static_cast<std::size_t>(i)])) << (8 * i);
+  if (stored != file_checksum(bytes, bytes.size() - kTrailerSize))
+    throw std::runtime_error("the file's checksum does not match its bytes: damaged");
+}
+
+void append_file_trailer(const fs::path& path) {
+  const std::string bytes = read_bytes(path);
+  std::uint64_t sum = file_checksum(bytes, bytes.size());
+  std::string trailer(kTrailerMagic, 8);
+  for (int i = 0; i < 8; ++i) trailer += static_cast<char>((sum >> (8 * i)) & 0xff);
+  std::ofstream out(path, std::ios::binary | std::ios::app);
+  out.write(trailer.data(), static_cast<std::streamsize>(trailer.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+std::string radiation_entry_checksum(const std::string& key, const AnchorOperators& operators) {
+  FnvDigest d;
+  d.text(kRadiationCacheLayout);
+  d.text(key);
+  digest_matrix(d, operators.transfer);
+  digest_matrix(d, operators.power);
+  return d.hex();
+}
+
+RadiationCache::RadiationCache(fs::path folder) : folder_(std::move(folder)) {}
+
+fs::path RadiationCache::file_of(const std::string& key) const {
+  if (!is_cache_key(key)) throw std::invalid_argument("radiation cache: the key \"" + key + "\" is not a plain file name");
+  return folder_ / (key + ".h5");
+}
+
+std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eigen::Index receivers,
+                                                    Eigen::Index columns) const {
+  const fs::path path = file_of(key);
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::nullopt;
+  try {
+    check_file_trailer(path);
+    // The bytes are those this code wrote: the HDF5 library reads them in this process.
+    return read_entry(path, key, receivers, columns);
+  } catch (const std::exception& error) {
+    // Each entry is loaded once per run, so this is the one warning for it.
+    std::fprintf(stderr, "rollnoise: warning: the radiation cache entry %s is damaged or foreign (%s): solving it again\n",
+                 path.string().c_str(), error.what());
+    return std::nullopt;
+  }
+}
+
+std::string describe_radiation_entry(const fs::path& file) {
+  try {
+    check_file_trailer(file);
+    const Hdf5Reader h5(file);
+    const auto text = [&](const char* name) {
+      const std::optional<std::string> value = h5.string_attribute("/", name);
+      if (!value) throw InputError(file.string(), std::string("/ attribute ") + name, "is missing");
+      return *value;
+    };
+    const auto number = [&](const char* name) {
+      const std::optional<double> value = h5.number_attribute("/", name);
+      if (!value) throw InputError(file.string(), std::string("/ attribute ") + name, "is missing");
+      return *value;
+    };
+    if (text("layout") != kRadiationCacheLayout) throw InputError(file.string(), "/ attribute layout", "is another layout");
+    if (file.stem().string() != text("key")) throw InputError(file.string(), "/ attribute key", "is not the file's name");
+    // The attributes only: load() checks the content against its checksum.
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "radiation operators at %.6g Hz: %.0f receivers, power rank %.0f, mesh of %.0f points and %.0f sources "
+                  "(tread split %.0f, %.0f sidewall rings), %s",
+                  number("anchor_hz"), number("receivers"), number("power_rank"), number("collocation_points"),
+                  number("sources"), number("tread_split"), number("sidewall_rings"), text("source_type").c_str());
+    return line;
+  } catch (const std::exception& error) {
+    return std::string("damaged or foreign: ") + error.what();
+  }
+}
+
+void RadiationCache::store(const std::string& key, const AnchorOperators& operators,
+                           const AnchorDescription& description) const {
+  if (store_failed_) return;
+  const fs::path path = file_of(key);
+  try {
+    std::error_code ec;
+    fs::create_directories(folder_, ec);
+    if (ec) throw std::runtime_error("cannot create the folder: " + ec.message());
+    TemporaryFile temporary(path);
+    {
+      Hdf5Writer h5(temporary.path());
+      h5.attribute("/", "layout", std::string(kRadiationCacheLayout));
+      h5.attribute("/", "key", key);
+      h5.attribute("/", "checksum", radiation_entry_checksum(key, operators));
+      h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
+      h5.attribute("/", "anchor_hz", description.anchor_hz);
+      h5.integer_attribute("/", "collocation_points", description.collocation_points);
+      h5.integer_attribute("/", "sources", description.sources);
+      h5.integer_attribute("/", "tread_split", description.tread_split);
+      h5.integer_attribute("/", "sidewall_rings", description.sidewall_rings);
+      h5.integer_attribute("/", "receivers", operators.transfer.rows());
+      h5.integer_attribute("/", "power_rank", operators.power.rows());
+      h5.attribute("/", "source_type", description.source_type);
+      const std::string columns = "; column: collocation point of the level mesh (the tread first)";
+      h5.write("/transfer_re", Eigen::MatrixXd(operators.transfer.real()), "Pa/(m/s)",
+               "real part of the transfer from normal velocity to receiver pressure; row: receiver" + columns);
+      h5.write("/transfer_im", Eigen::MatrixXd(operators.transfer.imag()), "Pa/(m/s)",
+               "imaginary part of the transfer to the receivers" + columns);
+      h5.write("/power_re", Eigen::MatrixXd(operators.power.real()), "sqrt(W)/(m/s)",
+               "real part of the power operator Q, W = 0.5*|Q v|^2" + columns);
+      h5.write("/power_im", Eigen::MatrixXd(operators.power.imag()), "sqrt(W)/(m/s)",
+               "imaginary part of the power operator Q" + columns);
+      h5.close();
+    }
+    append_file_trailer(temporary.path());
+    temporary.rename_to(path);
+  } catch (const std::exception& error) {
+    if (!store_failed_.exchange(true))
+      std::fprintf(stderr, "rollnoise: warning: cannot store in the radiation cache %s (%s): going on without storing\n",
+                   folder_.string().c_str(), error.what());
+  }
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,106 @@
+#pragma once
+// The radiation cache (issue 12, "Radiation solved once per tyre"): what the radiation stage
+// (tyre_radiation.hpp) solves at one anchor frequency that does not depend on the velocities,
+// kept on disk so that the next run of the same radiating body (another road, another speed,
+// another study case) loads it instead of solving the equivalent-source problem again.
+//
+// What an entry holds (AnchorOperators), for one anchor and one mesh level:
+//  - transfer: R × C, the receivers' pressures per unit normal velocity of the level mesh's
+//    first C collocation points (the tread; all points when one mesh serves every anchor and
+//    the velocities cover it all), T = P_rec·V⁺ (equivalent_sources.hpp);
+//  - power: r × C, the power operator Q = F·V⁺ with F the factor of the power matrix
+//    (EquivalentSources::power_factor), so that the radiated power of velocities v is
+//    W = ½‖Qv‖². r is the power matrix's numerical rank: small at low frequency.
+// Both are in the level mesh's own points, before the stage carries them to its input mesh, so
+// that an entry does not depend on which finer mesh the run's velocities come in on (the finest
+// level depends on the sample rate, the anchors below it do not).
+//
+// One HDF5 file per anchor and level, KEY.h5 with KEY = "radiation-" and an FNV-1a 64 digest
+// of everything the operators depend on (TyreRadiation::anchor_key): the level mesh's geometry
+// to the bit (points, normals, sources, source normals: the mesh spec, the deformation, the
+// band's split and rings and the sample-rate-dependent choices all act through it), the
+// medium, the receivers, the anchor frequency, the regularisation, the source type and its
+// coupling, the power factor's tolerance and a revision of this code. Why one file per anchor:
+// runs at other speeds share most anchors (only the top anchor and the finest level's sidewall
+// rings follow the sample rate); the anchors are solved on parallel threads and each stores its
+// own file as soon as it is solved, so a run cut off keeps what it finished; and a damaged file
+// costs one anchor's solve, not the whole tyre's.
+//
+// Layout: datasets /transfer_re, /transfer_im (R × C), /power_re, /power_im (r × C), doubles;
+// root attributes layout ("rollnoise radiation anchor 1"), key, checksum (16 hex digits: FNV-1a
+// 64 of the layout, the key, the dimensions and every value's bits: the payload), and a
+// description for `rollnoise cache list` (anchor_hz, sources, collocation_points, tread_split,
+// sidewall_rings, receivers, power_rank, source_type, software). After the HDF5 bytes a 16-byte
+// trailer: "RNCACHE1" and a checksum of every byte before it (FnvDigest::words), which HDF5
+// ignores (it reads up to the end address in its superblock; h5dump and h5py read the file as
+// usual). Reading checks the trailer first, so a truncated or damaged file never reaches the
+// HDF5 library (which can crash on damaged metadata), then the layout, the key (a foreign file
+// renamed into place), the dimensions and the payload's checksum. Anything wrong: one warning
+// ("rollnoise: warning: the radiation cache entry ... is damaged or foreign (...): solving it
+// again") and the anchor is solved and stored again. Writes go to a temporary file beside the
+// entry, renamed into place (core/cache_folder.hpp): two runs storing one entry at once both
+// leave a whole file (the same one: the operators are deterministic), and a reader sees the
+// old file or the new one.
+//
+// The cache never changes a result: the stage applies the operators in the same way whether
+// they were solved or loaded, and HDF5 keeps doubles bit for bit.
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace rollnoise {
+
+struct AnchorOperators {
+  Eigen::MatrixXcd transfer;  // R × C
+  Eigen::MatrixXcd power;     // r × C
+};
+
+// What an entry says of itself (attributes), for `rollnoise cache list`.
+struct AnchorDescription {
+  double anchor_hz = 0.0;
+  std::int64_t collocation_points = 0;
+  std::int64_t sources = 0;
+  std::int64_t tread_split = 1;
+  std::int64_t sidewall_rings = 0;
+  std::string source_type;  // "monopoles" or "combined"
+};
+
+inline constexpr char kRadiationCacheLayout[] = "rollnoise radiation anchor 1";
+inline constexpr char kRadiationCachePrefix[] = "radiation-";
+
+class RadiationCache {
+ public:
+  // `folder`: the cache folder (core/cache_folder.hpp), created when the first entry is stored.
+  explicit RadiationCache(std::filesystem::path folder);
+
+  const std::filesystem::path& folder() const noexcept { return folder_; }
+  std::filesystem::path file_of(const std::string& key) const;
+
+  // The entry under `key` with `receivers` rows of transfer and `columns` columns: std::nullopt
+  // when there is none (silently) or when it is damaged, truncated or foreign (with one warning
+  // naming the file and what is wrong). Safe to call from several threads.
+  std::optional<AnchorOperators> load(const std::string& key, Eigen::Index receivers, Eigen::Index columns) const;
+  // Stores the entry atomically. A failure (a full disk, a folder made read-only mid-run) is
+  // warned about once per RadiationCache and then stores are skipped: the run's results do not
+  // depend on the cache. Safe to call from several threads.
+  void store(const std::string& key, const AnchorOperators& operators, const AnchorDescription& description) const;
+
+ private:
+  std::filesystem::path folder_;
+  mutable std::atomic<bool> store_failed_{false};
+};
+
+// One line on an entry file for `rollnoise cache list`: its anchor, receivers, power rank,
+// mesh and source type from its attributes; "damaged or foreign: WHY" when they cannot be read
+// (in a child process, as load()). The content is not read: load() checks it.
+std::string describe_radiation_entry(const std::filesystem::path& file);
+
+// The FNV-1a 64 checksum of an entry's content as it is stored (the key, the dimensions, the
+// values' bits), 16 hex digits.
+std::string radiation_entry_checksum(const std::string& key, const AnchorOperators& operators);
+
+}  // namespace rollnoise
