@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "audio/wav_file.hpp"
 #include "cli/cli_workspace.hpp"
 
 namespace {
@@ -257,11 +258,14 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   EXPECT_GT(summary["full_scale_pa"].get<double>(), 0.0);
   EXPECT_GE(summary["wav_duration_s"].get<double>(), 5.0);
   EXPECT_TRUE(summary["sound_power"]["LwA_dB"].is_number());
-  // The radiating body is the loaded tyre (issue 10 §2): flat over the run's mean contact patch,
-  // to the mesh's cell size (the patch's edges are cell edges: equal to rounding).
+  // The radiating body is the loaded tyre (issue 10 §2): flat over the steady rolling patch
+  // (issue 12: the same for every road), to the mesh's cell size (the patch's edges are cell
+  // edges: equal to rounding), and that patch is close to the run's mean one on this road.
   EXPECT_EQ(summary["radiation"]["geometry"], "deformed");
-  EXPECT_NEAR(summary["radiation"]["flat_length_m"].get<double>(), summary["patch_length_m"].get<double>(), 1e-9);
-  EXPECT_NEAR(summary["radiation"]["flat_width_m"].get<double>(), summary["patch_width_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(summary["radiation"]["flat_length_m"].get<double>(), summary["radiation"]["patch_length_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(summary["radiation"]["flat_width_m"].get<double>(), summary["radiation"]["patch_width_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(summary["radiation"]["patch_length_m"].get<double>(), summary["patch_length_m"].get<double>(), 0.02);
+  EXPECT_NEAR(summary["radiation"]["patch_width_m"].get<double>(), summary["patch_width_m"].get<double>(), 0.02);
   EXPECT_NEAR(summary["radiation"]["axle_height_m"].get<double>(), 0.316 + 0.002 - summary["indentation_m"].get<double>(), 1e-9);
 
   // The energy budget (issue 10 §1): one row per third-octave band from 100 Hz to the top of the
@@ -918,4 +922,188 @@ TEST(SimulateCli, TwoLayerTyreWithASeparateTreadIsAnError) {
   EXPECT_TRUE(contains(r.err, "includes the tread")) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_FALSE(fs::exists(ws.path("out")));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The radiation cache (issue 12): --cache, --no-cache, `rollnoise cache list|clear`.
+
+namespace {
+
+// A short plate run with sound on a coarse mesh: 0.01 s, anchors every 250 Hz to 1.5 kHz.
+std::string short_sound_case(const Edit& surface) {
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  return edit_case(project_case("plate_rough_80kmh.toml"),
+                   {{"tyre", "file", "\"" + model + "\""}, surface,
+                    {"rolling", "duration", "0.01"},
+                    {"radiation", "mesh_around", "32"},
+                    {"radiation", "mesh_across", "4"},
+                    {"radiation", "sidewall_rings", "4"},
+                    {"radiation", "max_frequency", "1500"},
+                    {"radiation", "anchor_spacing", "250"},
+                    {"radiation", "contact_refinement", "3"},
+                    {"output", "plots", "false"}});
+}
+
+Edit library_surface(const std::string& name) {
+  std::string value = "\"";
+  value += (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "surfaces" / name).string();
+  value += '"';
+  return {"road", "surface", value};
+}
+
+std::vector<fs::path> radiation_entries(const fs::path& folder) {
+  std::vector<fs::path> out;
+  if (!fs::is_directory(folder)) return out;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (starts_with(e.path().filename().string(), "radiation-")) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// What must not change with the cache: levels, spectra and sound power to the byte, every WAV's
+// samples and header bit for bit. (Not the WAV files' bytes: libsndfile's PEAK chunk records
+// the time of writing, so two runs without the cache differ there too.)
+void expect_same_sound(const fs::path& a, const fs::path& b) {
+  for (const char* file : {"spectrum.csv", "sound_power.csv", "budget.csv"}) {
+    const std::string x = read_text(a / file);
+    EXPECT_FALSE(x.empty()) << a / file;
+    EXPECT_TRUE(x == read_text(b / file)) << file << " differs between " << a << " and " << b;
+  }
+  for (const char* file : {"cpx_front.wav", "cpx_rear.wav", "spb.wav", "spb_passby.wav"}) {
+    const rollnoise::WavData x = rollnoise::read_wav(a / file), y = rollnoise::read_wav(b / file);
+    ASSERT_EQ(x.channels.size(), 1u) << a / file;
+    ASSERT_EQ(y.channels.size(), 1u) << b / file;
+    EXPECT_GT(x.channels[0].size(), 0);
+    EXPECT_TRUE(x.channels[0] == y.channels[0]) << file << ": the samples differ between " << a << " and " << b;
+    EXPECT_EQ(x.comment, y.comment) << file;
+    EXPECT_EQ(x.sample_rate, y.sample_rate) << file;
+  }
+  const nlohmann::json sa = read_json(a / "summary.json"), sb = read_json(b / "summary.json");
+  EXPECT_EQ(sa["levels"], sb["levels"]);
+  EXPECT_EQ(sa["sound_power"], sb["sound_power"]);
+  EXPECT_EQ(sa["full_scale_pa"], sb["full_scale_pa"]);
+}
+
+}  // namespace
+
+// A run from the cache gives the same levels, spectra and WAVs, bit for bit, as one without it;
+// the second surface at the same speed finds every anchor in the cache (the radiating body is
+// the steady rolling patch, the same on every road); a damaged entry is warned about once and
+// solved again, with the same result.
+TEST(CacheCli, HitEqualsNoCacheAndSurfacesShareEntriesAndDamageIsRecomputed) {
+  Workspace ws;
+  ws.write("dac.toml", short_sound_case(library_surface("dac11.toml")));
+  ws.write("sma.toml", short_sound_case(library_surface("sma11.toml")));
+  const std::string cache = ws.path("cache").string();
+  const RunResult none = ws.run({"simulate", "dac.toml", "--out", "none", "--no-cache"});
+  ASSERT_EQ(none.status, 0) << describe(none);
+  EXPECT_FALSE(fs::exists(ws.path("cache")));
+  EXPECT_EQ(read_json(ws.path("none") / "summary.json")["radiation"]["cache"], "");
+
+  const RunResult cold = ws.run({"simulate", "dac.toml", "--out", "cold", "--cache", cache});
+  ASSERT_EQ(cold.status, 0) << describe(cold);
+  const nlohmann::json cold_summary = read_json(ws.path("cold") / "summary.json");
+  const auto anchors = cold_summary["radiation"]["anchors"].get<std::size_t>();
+  EXPECT_EQ(cold_summary["radiation"]["anchors_from_cache"].get<std::size_t>(), 0u);
+  EXPECT_EQ(radiation_entries(cache).size(), anchors);
+  expect_same_sound(ws.path("none"), ws.path("cold"));
+
+  const RunResult warm = ws.run({"simulate", "dac.toml", "--out", "warm", "--cache", cache});
+  ASSERT_EQ(warm.status, 0) << describe(warm);
+  EXPECT_EQ(read_json(ws.path("warm") / "summary.json")["radiation"]["anchors_from_cache"].get<std::size_t>(), anchors);
+  EXPECT_TRUE(warm.err.empty()) << warm.err;
+  expect_same_sound(ws.path("none"), ws.path("warm"));
+
+  // Another surface at the same speed and load: the same radiating body, every anchor shared.
+  const RunResult other = ws.run({"simulate", "sma.toml", "--out", "other", "--cache", cache});
+  ASSERT_EQ(other.status, 0) << describe(other);
+  EXPECT_EQ(read_json(ws.path("other") / "summary.json")["radiation"]["anchors_from_cache"].get<std::size_t>(), anchors);
+  EXPECT_EQ(radiation_entries(cache).size(), anchors);
+
+  // Damage: one entry truncated, another with bytes flipped in its middle.
+  const std::vector<fs::path> entries = radiation_entries(cache);
+  ASSERT_GE(entries.size(), 2u);
+  fs::resize_file(entries[0], fs::file_size(entries[0]) - 100);
+  {
+    std::fstream f(entries[1], std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(fs::file_size(entries[1]) / 2));
+    f.write("\xff\x00\xff\x00", 4);
+  }
+  const RunResult repaired = ws.run({"simulate", "dac.toml", "--out", "repaired", "--cache", cache});
+  ASSERT_EQ(repaired.status, 0) << describe(repaired);
+  for (const fs::path& damaged : {entries[0], entries[1]}) {
+    const std::string line = "rollnoise: warning: the radiation cache entry " + damaged.string();
+    const auto at = repaired.err.find(line);
+    EXPECT_NE(at, std::string::npos) << repaired.err;
+    EXPECT_EQ(repaired.err.find(line, at + 1), std::string::npos) << "warned once: " << repaired.err;
+  }
+  EXPECT_EQ(read_json(ws.path("repaired") / "summary.json")["radiation"]["anchors_from_cache"].get<std::size_t>(), anchors - 2);
+  expect_same_sound(ws.path("none"), ws.path("repaired"));
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+// `cache list` names each entry with its size, age and content, `cache clear` removes the
+// entries and nothing else; both default to the same folder as simulate ($ROLLNOISE_CACHE here).
+TEST(CacheCli, ListAndClear) {
+  Workspace ws;
+  ws.write("dac.toml", short_sound_case(library_surface("dac11.toml")));
+  const std::string cache = ws.path("cache").string();
+  const std::string env = "ROLLNOISE_CACHE=" + shell_quote(cache) + " ";
+  const RunResult run = ws.run({"simulate", "dac.toml", "--out", "out"}, env);
+  ASSERT_EQ(run.status, 0) << describe(run);
+  const std::size_t anchors = radiation_entries(cache).size();
+  ASSERT_GT(anchors, 0u) << "simulate used $ROLLNOISE_CACHE without --cache";
+  ws.write("cache/notes.txt", "a user's file in the folder");
+
+  const RunResult list = ws.run({"cache", "list"}, env);
+  ASSERT_EQ(list.status, 0) << describe(list);
+  EXPECT_EQ(count_lines(list.out), anchors + 1) << list.out;
+  EXPECT_TRUE(contains(list.out, "radiation operators at 1500 Hz: 3 receivers, power rank")) << list.out;
+  EXPECT_TRUE(contains(list.out, std::to_string(anchors) + " entries")) << list.out;
+  EXPECT_FALSE(contains(list.out, "notes.txt")) << list.out;
+  EXPECT_TRUE(contains(list.out, " s  radiation: ")) << "the age: " << list.out;
+  // Damage shows in the listing.
+  {
+    std::ofstream f(radiation_entries(cache).front(), std::ios::binary | std::ios::trunc);
+    f << "garbage";
+  }
+  const RunResult damaged = ws.run({"cache", "list", "--cache", cache});
+  EXPECT_TRUE(contains(damaged.out, "damaged or foreign")) << damaged.out;
+
+  const RunResult clear = ws.run({"cache", "clear"}, env);
+  ASSERT_EQ(clear.status, 0) << describe(clear);
+  EXPECT_TRUE(contains(clear.out, "removed " + std::to_string(anchors) + " entries")) << clear.out;
+  EXPECT_TRUE(radiation_entries(cache).empty());
+  EXPECT_TRUE(fs::exists(ws.path("cache/notes.txt"))) << "clear leaves files that are not entries";
+  const RunResult empty = ws.run({"cache", "list", "--cache", cache});
+  EXPECT_TRUE(contains(empty.out, "0 entries")) << empty.out;
+
+  for (const std::vector<std::string>& help :
+       {std::vector<std::string>{"cache", "--help"}, {"cache", "list", "--help"}, {"cache", "clear", "--help"}}) {
+    const RunResult h = ws.run(help);
+    EXPECT_EQ(h.status, 0) << describe(h);
+    EXPECT_TRUE(contains(h.out, "--cache") || contains(h.out, "list")) << h.out;
+  }
+  const RunResult verb = ws.run({"cache"});
+  EXPECT_EQ(verb.status, 2) << describe(verb);
+  for (const char* command : {"simulate", "study"}) {
+    const RunResult h = ws.run({command, "--help"});
+    EXPECT_TRUE(contains(h.out, "--cache") && contains(h.out, "--no-cache")) << h.out;
+  }
+  const RunResult both = ws.run({"simulate", "dac.toml", "--cache", cache, "--no-cache"});
+  EXPECT_EQ(both.status, 2) << describe(both);
+}
+
+// A cache folder that cannot be written (here a path under a regular file, which even root
+// cannot create): one warning, and the run goes on without the cache.
+TEST(CacheCli, UnwritableCacheFolderWarnsOnceAndTheRunSucceeds) {
+  Workspace ws;
+  ws.write("dac.toml", short_sound_case(library_surface("dac11.toml")));
+  ws.write("file", "not a folder");
+  const RunResult r = ws.run({"simulate", "dac.toml", "--out", "out", "--cache", ws.path("file/cache").string()});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  EXPECT_TRUE(starts_with(r.err, "rollnoise: warning: the cache folder ")) << r.err;
+  EXPECT_TRUE(contains(r.err, "running without the cache")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_EQ(read_json(ws.path("out") / "summary.json")["radiation"]["cache"], "");
 }
