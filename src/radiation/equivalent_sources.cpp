@@ -564,6 +564,80 @@ Eigen::MatrixXcd EquivalentSources::power_factor(double omega, double tolerance)
   return out;
 }
 
+std::vector<std::vector<Eigen::Index>> EquivalentSources::leading_coordinates(Eigen::Index columns) const {
+  const SymmetryBasis& basis = *point_basis_;
+  std::vector<std::vector<Eigen::Index>> out(static_cast<std::size_t>(basis.characters()));
+  for (int c = 0; c < basis.characters(); ++c) {
+    const std::vector<Eigen::Index>& block = basis.block(c);
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      const SymmetryBasis::Orbit& orbit = basis.orbits()[static_cast<std::size_t>(block[i])];
+      std::size_t inside = 0;
+      for (const SymmetryBasis::Member& m : orbit.members) inside += m.point < columns ? 1 : 0;
+      if (inside != 0 && inside != orbit.members.size())
+        throw std::invalid_argument("equivalent sources: the leading points are not a union of the symmetry's orbits");
+      if (inside) out[static_cast<std::size_t>(c)].push_back(static_cast<Eigen::Index>(i));
+    }
+  }
+  return out;
+}
+
+std::vector<Eigen::Index> EquivalentSources::point_coordinate_counts(Eigen::Index columns) const {
+  if (columns < 0 || columns > surface_.cols()) throw std::invalid_argument("equivalent sources: columns out of range");
+  if (!point_basis_) return {columns};
+  std::vector<Eigen::Index> out;
+  for (const auto& positions : leading_coordinates(columns)) out.push_back(static_cast<Eigen::Index>(positions.size()));
+  return out;
+}
+
+std::vector<Eigen::MatrixXcd> EquivalentSources::point_coordinates(const Eigen::MatrixXcd& v) const {
+  const Eigen::Index columns = v.rows();
+  if (columns > surface_.cols()) throw std::invalid_argument("equivalent sources: more velocities than points");
+  Eigen::MatrixXcd full = Eigen::MatrixXcd::Zero(surface_.cols(), v.cols());
+  full.topRows(columns) = v;
+  if (row_scale_.size()) full = row_scale_.asDiagonal() * full;
+  if (!point_basis_) return {full.topRows(columns)};
+  const std::vector<std::vector<Eigen::Index>> positions = leading_coordinates(columns);
+  std::vector<Eigen::MatrixXcd> out;
+  for (int c = 0; c < point_basis_->characters(); ++c) {
+    const Eigen::MatrixXcd reduced = point_basis_->reduce(full, c);
+    const std::vector<Eigen::Index>& keep = positions[static_cast<std::size_t>(c)];
+    Eigen::MatrixXcd x(static_cast<Eigen::Index>(keep.size()), v.cols());
+    for (std::size_t i = 0; i < keep.size(); ++i) x.row(static_cast<Eigen::Index>(i)) = reduced.row(keep[i]);
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+std::vector<Eigen::MatrixXcd> EquivalentSources::power_operator(const EquivalentSourceSolve& solve, double omega,
+                                                                Eigen::Index columns, double tolerance) const {
+  if (solve.source_count_ != sources_.cols() || solve.surface_points_ != surface_.cols() ||
+      static_cast<int>(solve.factors_.size()) != symmetry_blocks())
+    throw std::invalid_argument("equivalent sources: the solve is not this model's");
+  if (columns < 0 || columns > surface_.cols()) throw std::invalid_argument("equivalent sources: columns out of range");
+  // L_cᴴ·V_c⁺ from the block's own factor: V⁺ = Σ_c U_c V_c⁺ W_cᵀ and W_cᵀW_d = δ_cd, so
+  // F·V⁺ = Σ_c L_cᴴ V_c⁺ U_cᵀ (the weights, when set, act on v in point_coordinates).
+  const auto block_operator = [&](const std::optional<RegularisedLeastSquares>& factor, const Eigen::MatrixXcd& l,
+                                  Eigen::Index points) -> Eigen::MatrixXcd {
+    if (!factor || l.cols() == 0) return Eigen::MatrixXcd::Zero(l.cols(), points);
+    return factor->apply_pseudo_inverse_right(l.adjoint());
+  };
+  if (!point_basis_) {
+    const Eigen::MatrixXcd l = pivoted_cholesky(power_matrix(omega), tolerance);
+    return {block_operator(solve.factors_[0], l, surface_.cols()).leftCols(columns)};
+  }
+  const std::vector<Eigen::MatrixXcd> blocks = power_blocks(omega);
+  const std::vector<std::vector<Eigen::Index>> positions = leading_coordinates(columns);
+  std::vector<Eigen::MatrixXcd> out;
+  for (int c = 0; c < point_basis_->characters(); ++c) {
+    const auto k = static_cast<std::size_t>(c);
+    const Eigen::MatrixXcd q = block_operator(solve.factors_[k], pivoted_cholesky(blocks[k], tolerance), point_basis_->size(c));
+    Eigen::MatrixXcd kept(q.rows(), static_cast<Eigen::Index>(positions[k].size()));
+    for (std::size_t i = 0; i < positions[k].size(); ++i) kept.col(static_cast<Eigen::Index>(i)) = q.col(positions[k][i]);
+    out.push_back(std::move(kept));
+  }
+  return out;
+}
+
 Eigen::MatrixXcd EquivalentSources::transfer(double omega, const Eigen::Matrix3Xd& receivers, double regularisation) const {
   return solve(omega, regularisation).transfer(pressure_matrix(omega, receivers));
 }

@@ -180,6 +180,21 @@ class EquivalentSources {
   // power an operator on the surface velocities, W = ½‖(F·V⁺)v‖², that does not depend on them
   // (what the radiation cache stores, radiation_cache.hpp).
   Eigen::MatrixXcd power_factor(double omega, double tolerance = kPowerFactorTolerance) const;
+  // The power operator of `solve` (this model's solve at ω) on velocities of the first
+  // `columns` collocation points (the others at rest), in the symmetry-adapted coordinates of
+  // the points (point_coordinates): one block Q_c (r_c × t_c) per character of the split, so
+  // that W = ½ Σ_c ‖Q_c x_c‖² with x = point_coordinates(v). Q_c = L_cᴴ·V_c⁺ with L_c the
+  // pivoted Cholesky factor of the power matrix's block S_c: the blocks hold a quarter of the
+  // numbers of the operator on the points (power_factor through transfer()), since V⁺ and S
+  // do not couple the characters. Unsplit: one block, x = v. `columns` must be a union of the
+  // points' orbits (the tread, or all points); std::invalid_argument otherwise.
+  std::vector<Eigen::MatrixXcd> power_operator(const EquivalentSourceSolve& solve, double omega, Eigen::Index columns,
+                                               double tolerance = kPowerFactorTolerance) const;
+  // The coordinates of velocities v (columns × K, of the first `columns` points, the others at
+  // rest) per character: t_c × K each (unsplit: v itself, weighted as the solve weighs rows).
+  std::vector<Eigen::MatrixXcd> point_coordinates(const Eigen::MatrixXcd& v) const;
+  // t_c for `columns` (the blocks' column counts, for checking a stored operator).
+  std::vector<Eigen::Index> point_coordinate_counts(Eigen::Index columns) const;
 
   Eigen::Index source_count() const { return sources_.cols(); }
   bool combined_sources() const noexcept { return coupling_ > 0.0; }
@@ -205,6 +220,9 @@ class EquivalentSources {
   std::complex<double> power_entry(Eigen::Index i, Eigen::Index j, double k) const;
   // S_c per character of the source basis (split only).
   std::vector<Eigen::MatrixXcd> power_blocks(double omega) const;
+  // Per character, the positions in its block of the point basis whose orbits lie in the first
+  // `columns` points (split only; std::invalid_argument when an orbit straddles `columns`).
+  std::vector<std::vector<Eigen::Index>> leading_coordinates(Eigen::Index columns) const;
 
   Eigen::Matrix3Xd sources_, surface_, normals_;
   Eigen::Matrix3Xd source_normals_;  // combined sources (zero for monopoles)

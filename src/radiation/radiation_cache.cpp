@@ -46,7 +46,8 @@ Eigen::MatrixXcd read_complex(const Hdf5Reader& file, const std::string& name, s
   return out;
 }
 
-AnchorOperators read_entry(const fs::path& path, const std::string& key, Eigen::Index receivers, Eigen::Index columns) {
+AnchorOperators read_entry(const fs::path& path, const std::string& key, Eigen::Index receivers, Eigen::Index columns,
+                           const std::vector<Eigen::Index>& power_columns) {
   const Hdf5Reader file(path);
   const std::optional<std::string> layout = file.string_attribute("/", "layout");
   if (!layout || *layout != kRadiationCacheLayout)
@@ -57,7 +58,11 @@ AnchorOperators read_entry(const fs::path& path, const std::string& key, Eigen::
   const std::optional<std::string> checksum = file.string_attribute("/", "checksum");
   AnchorOperators out;
   out.transfer = read_complex(file, "transfer", static_cast<std::size_t>(receivers), static_cast<std::size_t>(columns));
-  out.power = read_complex(file, "power", 0, static_cast<std::size_t>(columns));
+  const std::optional<double> blocks = file.number_attribute("/", "power_blocks");
+  if (!blocks || *blocks != static_cast<double>(power_columns.size()))
+    throw InputError(path.string(), "/ attribute power_blocks", "is not the number of the mesh's symmetry blocks");
+  for (std::size_t c = 0; c < power_columns.size(); ++c)
+    out.power.push_back(read_complex(file, "power_" + std::to_string(c), 0, static_cast<std::size_t>(power_columns[c])));
   if (!checksum || *checksum != radiation_entry_checksum(key, out))
     throw InputError(path.string(), "/ attribute checksum", "does not match the content (a damaged file)");
   return out;
@@ -114,7 +119,8 @@ std::string radiation_entry_checksum(const std::string& key, const AnchorOperato
   d.text(kRadiationCacheLayout);
   d.text(key);
   digest_matrix(d, operators.transfer);
-  digest_matrix(d, operators.power);
+  d.integer(static_cast<std::int64_t>(operators.power.size()));
+  for (const Eigen::MatrixXcd& block : operators.power) digest_matrix(d, block);
   return d.hex();
 }
 
@@ -125,15 +131,21 @@ fs::path RadiationCache::file_of(const std::string& key) const {
   return folder_ / (key + ".h5");
 }
 
-std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eigen::Index receivers,
-                                                    Eigen::Index columns) const {
+Eigen::Index AnchorOperators::power_rank() const {
+  Eigen::Index rank = 0;
+  for (const Eigen::MatrixXcd& block : power) rank += block.rows();
+  return rank;
+}
+
+std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eigen::Index receivers, Eigen::Index columns,
+                                                    const std::vector<Eigen::Index>& power_columns) const {
   const fs::path path = file_of(key);
   std::error_code ec;
   if (!fs::exists(path, ec)) return std::nullopt;
   try {
     check_file_trailer(path);
     // The bytes are those this code wrote: the HDF5 library reads them in this process.
-    return read_entry(path, key, receivers, columns);
+    return read_entry(path, key, receivers, columns, power_columns);
   } catch (const std::exception& error) {
     // Each entry is loaded once per run, so this is the one warning for it.
     std::fprintf(stderr, "rollnoise: warning: the radiation cache entry %s is damaged or foreign (%s): solving it again\n",
@@ -192,17 +204,22 @@ void RadiationCache::store(const std::string& key, const AnchorOperators& operat
       h5.integer_attribute("/", "tread_split", description.tread_split);
       h5.integer_attribute("/", "sidewall_rings", description.sidewall_rings);
       h5.integer_attribute("/", "receivers", operators.transfer.rows());
-      h5.integer_attribute("/", "power_rank", operators.power.rows());
+      h5.integer_attribute("/", "power_rank", operators.power_rank());
+      h5.integer_attribute("/", "power_blocks", static_cast<std::int64_t>(operators.power.size()));
       h5.attribute("/", "source_type", description.source_type);
       const std::string columns = "; column: collocation point of the level mesh (the tread first)";
       h5.write("/transfer_re", Eigen::MatrixXd(operators.transfer.real()), "Pa/(m/s)",
                "real part of the transfer from normal velocity to receiver pressure; row: receiver" + columns);
       h5.write("/transfer_im", Eigen::MatrixXd(operators.transfer.imag()), "Pa/(m/s)",
                "imaginary part of the transfer to the receivers" + columns);
-      h5.write("/power_re", Eigen::MatrixXd(operators.power.real()), "sqrt(W)/(m/s)",
-               "real part of the power operator Q, W = 0.5*|Q v|^2" + columns);
-      h5.write("/power_im", Eigen::MatrixXd(operators.power.imag()), "sqrt(W)/(m/s)",
-               "imaginary part of the power operator Q" + columns);
+      for (std::size_t c = 0; c < operators.power.size(); ++c) {
+        const std::string name = "/power_" + std::to_string(c);
+        const std::string what = "part of the power operator's block Q_" + std::to_string(c) +
+                                 " (W = 0.5*sum_c |Q_c x_c|^2, x_c the velocities' coordinates in the mesh's symmetry "
+                                 "character c); row: power pattern, column: coordinate";
+        h5.write(name + "_re", Eigen::MatrixXd(operators.power[c].real()), "sqrt(W)/(m/s)", "real " + what);
+        h5.write(name + "_im", Eigen::MatrixXd(operators.power[c].imag()), "sqrt(W)/(m/s)", "imaginary " + what);
+      }
       h5.close();
     }
     append_file_trailer(temporary.path());

@@ -8,9 +8,12 @@
 //  - transfer: R × C, the receivers' pressures per unit normal velocity of the level mesh's
 //    first C collocation points (the tread; all points when one mesh serves every anchor and
 //    the velocities cover it all), T = P_rec·V⁺ (equivalent_sources.hpp);
-//  - power: r × C, the power operator Q = F·V⁺ with F the factor of the power matrix
-//    (EquivalentSources::power_factor), so that the radiated power of velocities v is
-//    W = ½‖Qv‖². r is the power matrix's numerical rank: small at low frequency.
+//  - power: the power operator in blocks, one per character of the mesh's mirror symmetries
+//    (EquivalentSources::power_operator): Q_c (r_c × t_c) with W = ½ Σ_c ‖Q_c x_c‖², x_c the
+//    symmetry-adapted coordinates of the velocities of the same C points; r_c the numerical rank
+//    of the power matrix's block (small at low frequency) and t_c about C/4, so the blocks hold
+//    a quarter of what the operator on the points would (about 20 MB per anchor at 5.6 kHz on
+//    the runs' default mesh instead of 80 MB).
 // Both are in the level mesh's own points, before the stage carries them to its input mesh, so
 // that an entry does not depend on which finer mesh the run's velocities come in on (the finest
 // level depends on the sample rate, the anchors below it do not).
@@ -26,8 +29,9 @@
 // own file as soon as it is solved, so a run cut off keeps what it finished; and a damaged file
 // costs one anchor's solve, not the whole tyre's.
 //
-// Layout: datasets /transfer_re, /transfer_im (R × C), /power_re, /power_im (r × C), doubles;
-// root attributes layout ("rollnoise radiation anchor 1"), key, checksum (16 hex digits: FNV-1a
+// Layout: datasets /transfer_re, /transfer_im (R × C), /power_K_re, /power_K_im (r_K × t_K, K
+// = 0 … blocks − 1), doubles; attribute power_blocks;
+// root attributes layout ("rollnoise radiation anchor 2"), key, checksum (16 hex digits: FNV-1a
 // 64 of the layout, the key, the dimensions and every value's bits: the payload), and a
 // description for `rollnoise cache list` (anchor_hz, sources, collocation_points, tread_split,
 // sidewall_rings, receivers, power_rank, source_type, software). After the HDF5 bytes a 16-byte
@@ -49,14 +53,16 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 namespace rollnoise {
 
 struct AnchorOperators {
-  Eigen::MatrixXcd transfer;  // R × C
-  Eigen::MatrixXcd power;     // r × C
+  Eigen::MatrixXcd transfer;           // R × C
+  std::vector<Eigen::MatrixXcd> power;  // per character: r_c × t_c
+  Eigen::Index power_rank() const;     // Σ r_c
 };
 
 // What an entry says of itself (attributes), for `rollnoise cache list`.
@@ -69,7 +75,7 @@ struct AnchorDescription {
   std::string source_type;  // "monopoles" or "combined"
 };
 
-inline constexpr char kRadiationCacheLayout[] = "rollnoise radiation anchor 1";
+inline constexpr char kRadiationCacheLayout[] = "rollnoise radiation anchor 2";
 inline constexpr char kRadiationCachePrefix[] = "radiation-";
 
 class RadiationCache {
@@ -80,10 +86,12 @@ class RadiationCache {
   const std::filesystem::path& folder() const noexcept { return folder_; }
   std::filesystem::path file_of(const std::string& key) const;
 
-  // The entry under `key` with `receivers` rows of transfer and `columns` columns: std::nullopt
+  // The entry under `key` with `receivers` rows of transfer and `columns` columns, and power
+  // blocks of `power_columns` columns each: std::nullopt
   // when there is none (silently) or when it is damaged, truncated or foreign (with one warning
   // naming the file and what is wrong). Safe to call from several threads.
-  std::optional<AnchorOperators> load(const std::string& key, Eigen::Index receivers, Eigen::Index columns) const;
+  std::optional<AnchorOperators> load(const std::string& key, Eigen::Index receivers, Eigen::Index columns,
+                                      const std::vector<Eigen::Index>& power_columns) const;
   // Stores the entry atomically. A failure (a full disk, a folder made read-only mid-run) is
   // warned about once per RadiationCache and then stores are skipped: the run's results do not
   // depend on the cache. Safe to call from several threads.

@@ -168,7 +168,7 @@ AnchorOperators TyreRadiation::solve_anchor(std::size_t level_index, double anch
   const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
   AnchorOperators out;
   out.transfer = solve.transfer(model.pressure_matrix(omega, receivers_)).leftCols(columns);
-  out.power = solve.transfer(model.power_factor(omega)).leftCols(columns);
+  out.power = model.power_operator(solve, omega, columns);
   return out;
 }
 
@@ -232,7 +232,8 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
     // anchors in hand are in memory), else solved and stored.
     const std::string key = cache ? anchor_key(level_index, anchor[a], columns_of(level_index)) : std::string();
     std::optional<AnchorOperators> cached;
-    if (cache) cached = cache->load(key, receivers_.cols(), columns_of(level_index));
+    const EquivalentSources& model = anchor[a] > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
+    if (cache) cached = cache->load(key, receivers_.cols(), columns_of(level_index), model.point_coordinate_counts(columns_of(level_index)));
     AnchorOperators operators;
     if (cached) {
       operators = std::move(*cached);
@@ -246,7 +247,7 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
         cache->store(key, operators, description);
       }
     }
-    out.power_rank = operators.power.rows();
+    out.power_rank = operators.power_rank();
     if (own)
       out.transfer = std::move(operators.transfer);
     else
@@ -256,7 +257,7 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
     for (Eigen::Index b = 0; b < band; ++b)
       if (frequency(b) >= below && frequency(b) <= above && (frequency(b) > below || a == 0)) out.bins.push_back(b);
     if (out.bins.empty()) return;
-    Eigen::MatrixXcd velocities(operators.power.cols(), static_cast<Eigen::Index>(out.bins.size()));
+    Eigen::MatrixXcd velocities(columns_of(level_index), static_cast<Eigen::Index>(out.bins.size()));
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const auto c = static_cast<Eigen::Index>(i);
       if (own)
@@ -264,14 +265,20 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
       else
         velocities.col(c) = level.from_input * spectra.col(out.bins[i]);
     }
-    // W = ½‖Qv‖² (EquivalentSources::power_factor).
-    const Eigen::MatrixXcd amplitudes = operators.power * velocities;
+    // W = ½ Σ_c ‖Q_c x_c‖² (EquivalentSources::power_operator).
+    const std::vector<Eigen::MatrixXcd> coordinates = model.point_coordinates(velocities);
+    Eigen::VectorXd squares = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(out.bins.size()));
+    for (std::size_t c = 0; c < coordinates.size(); ++c) {
+      if (operators.power[c].rows() == 0) continue;
+      const Eigen::MatrixXcd amplitudes = operators.power[c] * coordinates[c];
+      for (Eigen::Index i = 0; i < amplitudes.cols(); ++i) squares(i) += amplitudes.col(i).squaredNorm();
+    }
     for (std::size_t i = 0; i < out.bins.size(); ++i) {
       const double f = frequency(out.bins[i]);
       const double hat = f < anchor[a] ? (f - below) / (anchor[a] - below)
                          : f > anchor[a] ? (above - f) / (above - anchor[a])
                                          : 1.0;
-      out.power.push_back(hat * power_scale * 0.5 * amplitudes.col(static_cast<Eigen::Index>(i)).squaredNorm());
+      out.power.push_back(hat * power_scale * 0.5 * squares(static_cast<Eigen::Index>(i)));
     }
   };
 
