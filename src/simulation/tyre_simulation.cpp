@@ -324,33 +324,20 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   Eigen::Index snapshot = 0;
   trace.total_force.maxCoeff(&snapshot);
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
-  // The radiating body (issue 10 §2): the loaded tyre, flattened over its contact patch (centred
-  // under the axle) with the axle lowered by the indentation; beyond the patch the belt's own
-  // deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders beyond the
-  // patch's width are lifted by the crown's drop there, at least the clearance.
-  // The patch is that of steady rolling on a smooth road (issue 12, docs/radiation_cache.md): the
-  // mean loaded shape of the model, which the texture does not change. The horn is a
-  // decimetre-scale shape that texture moves by millimetres; with the steady patch every road
-  // at one speed and load gives the same body, so the radiation cache's entries serve them all
-  // (with the run's mean patch no two surfaces would share one).
-  const auto steady_patch = [&] {
-    int i_min = grid.window, i_max = -1, j_min = grid.lateral, j_max = -1;
-    for (int j = 0; j < grid.lateral; ++j)
-      for (int i = 0; i < grid.window; ++i)
-        if (trace.steady_force(i + static_cast<Eigen::Index>(grid.window) * j) > 0.0) {
-          i_min = std::min(i_min, i);
-          i_max = std::max(i_max, i);
-          j_min = std::min(j_min, j);
-          j_max = std::max(j_max, j);
-        }
-    // The extent as the trace measures contact_length and contact_width (rolling_tyre.cpp).
-    return i_max < 0 ? std::pair{0.0, 0.0} : std::pair{(i_max - i_min + 1) * grid.dx(), (j_max - j_min + 1) * grid.dy()};
-  };
+  // The radiating body (issue 10 §2): the loaded tyre, flattened over the run's mean contact
+  // patch (centred under the axle) with the axle lowered by the indentation; beyond the patch the
+  // belt's own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders
+  // beyond the patch's width are lifted by the crown's drop there, at least the clearance.
+  // Not the steady rolling patch on a smooth road, which would be the same on every road and
+  // let cases on other surfaces share the radiation cache's entries (issue 12): on the rough
+  // library surfaces it is 7-11 mm shorter than the run's own mean patch (0.1075 m against
+  // 0.1193 m on DAC 11, 0.1149 m on SMA 11 at 80 km/h), which puts the horn's throat inside the
+  // tread the run holds against the texture and moved the levels by 1.0-1.9 dB
+  // (docs/radiation_cache.md). The mean patch is where this run's tread leaves the road.
   if (sound.enabled && sound.radiation.mesh.geometry == TyreGeometry::deformed) {
     TyreDeformation& shape = sound.radiation.mesh.deformation;
-    const auto [steady_length, steady_width] = steady_patch();
-    shape.patch_length = steady_length;
-    shape.patch_width = std::min(steady_width, grid.width);
+    shape.patch_length = trace.contact_length.mean();
+    shape.patch_width = std::min(trace.contact_width.mean(), grid.width);
     shape.indentation = trace.indentation;
     shape.belt_tension = model.belt_tension;
     shape.belt_bending = model.belt_bending;
