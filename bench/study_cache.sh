@@ -11,12 +11,12 @@
 #                           a machine where the whole study takes too long)
 #   SPEEDS="22.222"         only these speeds (m/s) of its rolling.speed list
 #   THREADS=N               cases side by side (default: the study's default, one per core)
-# Uses build/ as built by tools/setup.sh.
+#   BIN=PATH                the rollnoise to run (default: build/, as built by tools/setup.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 study=${1:-models/studies/surfaces_cpx.toml}
 out=${2:-out/bench_study_cache}
-bin=$PWD/build/tools/rollnoise/rollnoise
+bin=${BIN:-$PWD/build/tools/rollnoise/rollnoise}
 cache=$(mktemp -d "${TMPDIR:-/tmp}/rollnoise-bench-cache.XXXXXX")
 trap 'rm -rf "$cache"' EXIT
 mkdir -p "$out"

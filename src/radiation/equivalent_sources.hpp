@@ -177,8 +177,8 @@ class EquivalentSources {
   // factor (pivoted_cholesky below) of S, or of each symmetry block S_c when split (its rows
   // then act on character c only). r is S's numerical rank at `tolerance`: few rows at low
   // frequency, where few source patterns radiate. With the solve's transfer() it makes the
-  // power an operator on the surface velocities, W = ½‖(F·V⁺)v‖², that does not depend on them
-  // (what the radiation cache stores, radiation_cache.hpp).
+  // power an operator on the surface velocities, W = ½‖(F·V⁺)v‖², that does not depend on them;
+  // power_operator() gives the same by symmetry blocks (what the radiation cache stores).
   Eigen::MatrixXcd power_factor(double omega, double tolerance = kPowerFactorTolerance) const;
   // The power operator of `solve` (this model's solve at ω) on velocities of the first
   // `columns` collocation points (the others at rest), in the symmetry-adapted coordinates of

@@ -24,10 +24,13 @@
 // band's split and rings and the sample-rate-dependent choices all act through it), the
 // medium, the receivers, the anchor frequency, the regularisation, the source type and its
 // coupling, the power factor's tolerance and a revision of this code. Why one file per anchor:
-// runs at other speeds share most anchors (only the top anchor and the finest level's sidewall
-// rings follow the sample rate); the anchors are solved on parallel threads and each stores its
-// own file as soon as it is solved, so a run cut off keeps what it finished; and a damaged file
-// costs one anchor's solve, not the whole tyre's.
+// the anchors are solved on parallel threads and each stores its own file as soon as it is
+// solved, so no thread waits for the others and a run cut off keeps what it finished; a damaged
+// file costs one anchor's solve, not the whole tyre's; and runs of one body at other sample
+// rates share the anchors below their tops (the top anchor and the finest level's sidewall rings
+// follow the sample rate). The body is deformed by the run's mean contact patch
+// (tyre_simulation.cpp), so cases on other roads or at other speeds have their own entries:
+// docs/radiation_cache.md.
 //
 // Layout: datasets /transfer_re, /transfer_im (R × C), /power_K_re, /power_K_im (r_K × t_K, K
 // = 0 … blocks − 1), doubles; attribute power_blocks;

@@ -30,11 +30,11 @@
 // mesh directly, and each anchor's transfer is carried back to the input mesh's cells.
 //
 // What each anchor solves (AnchorOperators, radiation_cache.hpp) does not depend on the
-// velocities: the transfer to the receivers and the power operator Q of the anchor's level mesh,
-// W = ½‖Qv‖² (EquivalentSources::power_factor). They are solved first and applied to the
-// velocities after, and with a RadiationCache they are loaded from and stored to disk, keyed by
-// anchor_key(); the stage applies loaded and solved operators the same way, so a run from the
-// cache gives the same numbers bit for bit.
+// velocities: the transfer to the receivers and the power operator of the anchor's level mesh,
+// W = ½ Σ_c ‖Q_c x_c‖² over the mesh's symmetry blocks (EquivalentSources::power_operator). They
+// are solved first and applied to the velocities after, and with a RadiationCache they are
+// loaded from and stored to disk, keyed by anchor_key(); the stage applies loaded and solved
+// operators the same way, so a run from the cache gives the same numbers bit for bit.
 //
 // Determinism: every anchor is solved the same way whatever thread solves it, and the results
 // are combined in anchor order, so the numbers do not depend on the thread count.

@@ -234,8 +234,8 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   }
   const bool deformed = settings.radiation.mesh.geometry == TyreGeometry::deformed;
   result["radiation"] = {{"band_hz", {sound.lowest_hz, sound.highest_hz}},
-                         // The patch the body is flattened over: steady rolling on a smooth road
-                         // (tyre_simulation.cpp, docs/radiation_cache.md), not the run's mean.
+                         // The patch the body is flattened over (the run's mean contact patch,
+                         // tyre_simulation.cpp): what the radiation cache's key covers.
                          {"patch_length_m", deformed ? settings.radiation.mesh.deformation.patch_length : 0.0},
                          {"patch_width_m", deformed ? settings.radiation.mesh.deformation.patch_width : 0.0},
                          {"flat_length_m", flat_x1 - flat_x0},
