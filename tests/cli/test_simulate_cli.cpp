@@ -1091,7 +1091,7 @@ TEST(CacheCli, ListAndClear) {
   }
   const RunResult verb = ws.run({"cache"});
   EXPECT_EQ(verb.status, 2) << describe(verb);
-  for (const char* command : {"simulate", "study"}) {
+  for (const char* command : {"simulate", "study", "greens"}) {
     const RunResult h = ws.run({command, "--help"});
     EXPECT_TRUE(contains(h.out, "--cache") && contains(h.out, "--no-cache")) << h.out;
   }

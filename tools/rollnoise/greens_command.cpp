@@ -26,6 +26,8 @@
 #include "core/output_directory.hpp"
 #include "greens/centre_line_response.hpp"
 #include "greens/fitted_modal_tyre.hpp"
+#include "cache_command.hpp"
+#include "core/cache_folder.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "simulation/greens_plots.hpp"
@@ -214,6 +216,7 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
                   "A model file (models/tyres/NAME.toml): sdof, coupled_sdof, plate, two_layer or tabulated")
       ->required();
   cmd->add_option("--out", options.out, "Output folder (default out/<model name>_greens); written atomically");
+  add_cache_options(*cmd, options.cache, options.no_cache);
   cmd->add_option("--frequencies", options.frequencies,
                   "F1:F2:N, N frequencies evenly spaced from F1 to F2 inclusive, Hz (default 0 to the model's "
                   "top frequency, 501 of them: 5 kHz in 10 Hz steps for a tyre); the row at 0 Hz is the static compliance");
@@ -238,7 +241,9 @@ int run_greens(const GreensOptions& options) {
   if (!fs::is_regular_file(input, ec)) throw InputError(options.model, "", "file not found (or not a regular file)");
   const CaseFile file = CaseFile::load_model(input);
   const ConfigTable top = file.top();
-  const std::unique_ptr<CentreLineResponse> response = make_centre_line_response(top);
+  // The same cache folder as simulate's (two-layer tables, mode fits).
+  const std::optional<fs::path> cache = usable_cache_folder(options.cache, options.no_cache);
+  const std::unique_ptr<CentreLineResponse> response = make_centre_line_response(top, cache);
   const std::vector<double> distances = checked_distances(options, *response);
   const double top_hz = response->default_top_frequency_hz();
   const std::vector<double> frequencies =
@@ -285,7 +290,7 @@ int run_greens(const GreensOptions& options) {
   // log-spaced 1 Hz – 20 kHz), not on --frequencies: a linear grid to 5 kHz misses the narrow
   // low resonances and the tail the step means need. Through the cache `simulate` shares.
   std::optional<ModalReceptanceTable> modal_table =
-      response->modal_table(tyre_mode_fit_frequencies(), default_cache_directory());
+      response->modal_table(tyre_mode_fit_frequencies(), cache);
   // The cache names a table it found by its file; a table computed afresh by the model.
   const bool modal_table_from_cache = modal_table && modal_table->source != response->model();
   if (modal_table) modal_table->source = response->model();
