@@ -330,7 +330,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // beyond the patch's width are lifted by the crown's drop there, at least the clearance.
   // Not the steady rolling patch on a smooth road, which would be the same on every road and
   // let cases on other surfaces share the radiation cache's entries (issue 12): on the rough
-  // library surfaces it is 7-11 mm shorter than the run's own mean patch (0.1075 m against
+  // library surfaces it is 7-12 mm shorter than the run's own mean patch (0.1075 m against
   // 0.1193 m on DAC 11, 0.1149 m on SMA 11 at 80 km/h), which puts the horn's throat inside the
   // tread the run holds against the texture and moved the levels by 1.0-1.9 dB
   // (docs/radiation_cache.md). The mean patch is where this run's tread leaves the road.
