@@ -161,9 +161,11 @@ TEST(OversizedCase, APointRunLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) 
 }
 
 TEST(OversizedCase, SizesWhoseProductOverflowsAreExitStatus2) {
-  // 9.1e14 steps × 20 lateral × 1016 around overflows 64 bits.
+  // 9.1e14 steps × (3 × 2040 window + 2 × 20 × 1016 belt values) × 4 bytes of contact.h5 with
+  // [output] fields = "all" overflows 64 bits.
   Workspace ws;
-  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=8e10"});
+  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=8e10", "--set",
+                              "output.fields=\"all\""});
   EXPECT_EQ(r.status, 2) << describe(r);
   EXPECT_TRUE(contains(r.err, "overflows 64 bits")) << r.err;
   EXPECT_EQ(count_lines(r.err), 1u) << r.err;
