@@ -10,6 +10,13 @@
 namespace rollnoise {
 namespace {
 
+// HDF5 closes what is still open when the process exits (an atexit handler). A file whose
+// writes failed (a full disk, a file-size limit) cannot be closed, and libhdf5 1.10 crashes
+// (SIGSEGV in H5F__close_cb) when its handler tries again at exit, turning a clean "cannot
+// write" and exit status 1 into a crash. Every HDF5 object here is closed by RAII, so the
+// handler has nothing to do: it is switched off before main() makes any HDF5 call.
+[[maybe_unused]] const bool hdf5_exit_handler_off = H5dont_atexit() >= 0;
+
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
 }

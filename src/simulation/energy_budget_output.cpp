@@ -11,6 +11,7 @@
 #include "contact/contact_force_estimate.hpp"
 #include "contact/texture_under_contact.hpp"
 #include "core/csv.hpp"
+#include "core/output_directory.hpp"
 #include "core/gnuplot.hpp"
 #include "greens/plate_mobility_average.hpp"
 #include "radiation/radiation_efficiency.hpp"
@@ -219,8 +220,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
       if (!std::isfinite(v)) v = -999.0;  // a zero power: no level (the CSV holds finite numbers)
     csv.row(values.data(), values.size());
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write budget.csv");
+  close_output_file(out, dir / "budget.csv");
 
   if (plots) {
     // Columns (1-based) of the lines drawn.
