@@ -318,8 +318,13 @@ class TiledAggregateSurface final : public RoadSurface {
   const std::vector<double>& tile(std::size_t index) const {
     for (const Tile& t : tiles_)
       if (t.index == index) return t.heights;
-    // The tyre moves on: replace the tile further behind.
-    Tile& slot = tiles_[0].index < tiles_[1].index ? tiles_[0] : tiles_[1];
+    // Replace the tile farther from this one (an empty slot first): the tyre reads two
+    // neighbouring tiles around a boundary, and moves on.
+    const auto distance = [index](const Tile& t) {
+      if (t.index == std::numeric_limits<std::size_t>::max()) return std::numeric_limits<std::size_t>::max();
+      return t.index > index ? t.index - index : index - t.index;
+    };
+    Tile& slot = distance(tiles_[0]) >= distance(tiles_[1]) ? tiles_[0] : tiles_[1];
     std::vector<double> z((tile_samples_ + 1) * (2 * half_y_ + 1), spec_.binder_level * (spec_.shape_factor * k_.dmax));
     const std::size_t first = index * tile_samples_;
     for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
