@@ -80,23 +80,19 @@ void write_pressure_snapshot(const fs::path& path, const Eigen::VectorXd& force,
   close_output_file(out, path);
 }
 
-// The radiating body (issue 10 §2): the loaded tyre, flattened over its steady rolling contact
-// patch (centred under the axle) with the axle lowered by the indentation; beyond the patch the
-// belt's own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders
-// beyond the patch's width are lifted by the crown's drop there, at least the clearance.
-// The patch is the steady one (the tyre on the smooth road at the run's load and speed), not
-// the run's mean: it is known before the first step, so the belt can be sampled onto the mesh
-// as the run goes (tyre_step_outputs.hpp), and it does not depend on the texture, which moves
-// the patch's outline by millimetres and the decimetre-scale horn hardly at all (measured in
-// README, "Memory and output size").
-void deform_radiating_body(TyreSoundSettings& sound, const SteadyRolling& steady, const TyreGrid& grid,
+// The radiating body (issue 10 §2): the loaded tyre, flattened over the run's mean contact patch
+// (centred under the axle) with the axle lowered by the indentation; beyond the patch the belt's
+// own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders beyond the
+// patch's width are lifted by the crown's drop there, at least the clearance. The patch is
+// measured over the run's first steps (all of a run of up to 4096: tyre_step_outputs.hpp), so
+// that the belt can be sampled onto the mesh as the run goes on.
+void deform_radiating_body(TyreSoundSettings& sound, const RadiatingPatch& patch, const TyreGrid& grid,
                            const RollingTyreModel& model, const CaseFile& file) {
   if (sound.radiation.mesh.geometry != TyreGeometry::deformed) return;
-  const ContactExtent patch = contact_extent(grid, steady.force);
   TyreDeformation& shape = sound.radiation.mesh.deformation;
-  shape.patch_length = patch.length(grid);
-  shape.patch_width = std::min(patch.width(grid), grid.width);
-  shape.indentation = steady.indentation;
+  shape.patch_length = patch.length;
+  shape.patch_width = std::min(patch.width, grid.width);
+  shape.indentation = patch.indentation;
   shape.belt_tension = model.belt_tension;
   shape.belt_bending = model.belt_bending;
   shape.foundation_stiffness = model.foundation_stiffness;
@@ -278,8 +274,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   if (sound.enabled) {
     // The belt onto the radiation's input mesh (the finest of its bands' meshes,
     // tyre_radiation.hpp), the tyre deformed as it rolls (deform_radiating_body).
-    step_outputs.tread_sampling = [&](const SteadyRolling& steady) {
-      deform_radiating_body(sound, steady, grid, model, file);
+    step_outputs.tread_sampling = [&](const RadiatingPatch& patch) {
+      deform_radiating_body(sound, patch, grid, model, file);
       return belt_to_tread_matrix(grid.circumferential, grid.lateral,
                                   make_tyre_surface_mesh(radiation_mesh_levels(sound.radiation).back().spec));
     };
@@ -332,10 +328,6 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   summary["mean_contact_area_m2"] = trace.contact_area.mean();
   summary["patch_length_m"] = trace.contact_length.mean();
   summary["patch_width_m"] = trace.contact_width.mean();
-  // The steady rolling patch (the smooth road at this load and speed): the radiating body's flat.
-  const ContactExtent steady_patch = contact_extent(grid, trace.steady_force);
-  summary["steady_patch_length_m"] = steady_patch.length(grid);
-  summary["steady_patch_width_m"] = steady_patch.width(grid);
   summary["rolling_resistance_N"] = mean_power / settings.speed;
   summary["steady_rolling_resistance_N"] = trace.steady_rolling_resistance;
   summary["indentation_m"] = trace.indentation;

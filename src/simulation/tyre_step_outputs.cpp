@@ -31,6 +31,10 @@ const char* to_string(ContactFields fields) {
 }
 
 namespace {
+// Steps over which the radiating body's patch is measured before the response stage starts
+// (the forces wait meanwhile: 4096 × 2040 doubles, 67 MB on the 5 kHz grid). A run of at most
+// this many steps (0.36 s at 80 km/h) is measured whole.
+constexpr std::size_t patch_steps = 4096;
 // 256 steps to a chunk: 2 MB of window field at 2040 points, large enough for deflate to find
 // the road's repeats (it moves one cell per cell of travel) and few enough calls into HDF5.
 constexpr std::size_t chunk_steps = 256;
@@ -76,8 +80,10 @@ void TyreStepOutputs::start(const SteadyRolling& steady) {
       cell_under_[static_cast<std::size_t>(i + grid.window * j)] = row + static_cast<Eigen::Index>(across) * grid.grid_index(i);
   }
   if (settings_.tread_sampling) {
-    sampling_ = settings_.tread_sampling(steady);
-    tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
+    indentation_ = steady.indentation;
+    patch_forces_.resize(grid.points(), static_cast<Eigen::Index>(std::min(settings_.samples, patch_steps)));
+    patch_lengths_.reserve(static_cast<std::size_t>(patch_forces_.cols()));
+    patch_widths_.reserve(static_cast<std::size_t>(patch_forces_.cols()));
   }
   if (settings_.fields != ContactFields::none) writing([&] { open_contact_h5(*response_); });
 }
@@ -172,7 +178,54 @@ void TyreStepOutputs::take(const ContactStep& step) {
     snapshot_force_ = step.force;
     snapshot_time_ = step.time;
   }
-  response_->step(step.force, u_, v_);
+  if (h5_) {
+    const auto p = static_cast<std::size_t>(modes_.substeps()), length = strip_length();
+    for (std::size_t j = 0; j < static_cast<std::size_t>(grid.lateral); ++j)
+      for (std::size_t i = 0; i < static_cast<std::size_t>(grid.window); ++i)
+        road_strip_[j * length + i * p + step.index] =
+            static_cast<float>(step.road(static_cast<Eigen::Index>(i + static_cast<std::size_t>(grid.window) * j)));
+    writing([&] {
+      // The window fields are [j][i] in C order: p = i + Nw·j is already that order.
+      const Eigen::VectorXd* fields[] = {&step.force, &step.road, &step.displacement};
+      for (std::size_t f = 0; f < window_streams_.size(); ++f) {
+        std::transform(fields[f]->data(), fields[f]->data() + fields[f]->size(), slice_.begin(),
+                       [](double value) { return static_cast<float>(value); });
+        window_streams_[f]->append(slice_.data());
+      }
+    });
+  }
+  if (!settings_.tread_sampling) {
+    respond(step.index, step.force);
+    return;
+  }
+  if (sampling_.rows() > 0) {
+    respond(step.index, step.force);
+    return;
+  }
+  // Until the radiating body is known, the forces wait (the response stage is a recursion from
+  // step 0, so it waits with them), and the patch is measured.
+  const ContactExtent extent = contact_extent(grid, step.force);
+  patch_lengths_.push_back(extent.length(grid));
+  patch_widths_.push_back(extent.width(grid));
+  patch_forces_.col(static_cast<Eigen::Index>(step.index)) = step.force;
+  if (step.index + 1 == static_cast<std::size_t>(patch_forces_.cols())) body_known();
+}
+
+void TyreStepOutputs::body_known() {
+  // The run's mean patch so far (all of it when the run has at most patch_steps steps), as the
+  // run's totals average it (Eigen's mean of the same values).
+  const Eigen::VectorXd lengths = Eigen::Map<const Eigen::VectorXd>(patch_lengths_.data(), static_cast<Eigen::Index>(patch_lengths_.size()));
+  const Eigen::VectorXd widths = Eigen::Map<const Eigen::VectorXd>(patch_widths_.data(), static_cast<Eigen::Index>(patch_widths_.size()));
+  sampling_ = settings_.tread_sampling(RadiatingPatch{lengths.mean(), widths.mean(), indentation_});
+  if (sampling_.rows() == 0) throw std::logic_error("TyreStepOutputs: an empty tread sampling");
+  tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
+  for (Eigen::Index n = 0; n < patch_forces_.cols(); ++n) respond(static_cast<std::size_t>(n), patch_forces_.col(n));
+  patch_forces_.resize(0, 0);
+}
+
+void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force) {
+  const TyreGrid& grid = modes_.grid();
+  response_->step(force, u_, v_);
   if (settings_.belt_psd) settings_.belt_psd->push(std::span<const double>(v_.data(), static_cast<std::size_t>(v_.size())));
   if (settings_.tread_sampling) {
     // The radiating velocity leaves out the cells in contact: the road holds the tread there,
@@ -182,30 +235,18 @@ void TyreStepOutputs::take(const ContactStep& step) {
     // the very horn the mesh resolves.
     radiating_ = v_.reshaped();
     for (std::size_t p = 0; p < cell_under_.size(); ++p)
-      if (step.force(static_cast<Eigen::Index>(p)) > 0.0) radiating_(cell_under_[p]) = 0.0;
-    tread_velocity_.row(static_cast<Eigen::Index>(step.index)) = (sampling_ * radiating_).transpose();
+      if (force(static_cast<Eigen::Index>(p)) > 0.0) radiating_(cell_under_[p]) = 0.0;
+    tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
   }
   // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
   const auto substeps = static_cast<std::size_t>(modes_.substeps());
   const int around = grid.circumferential, across = grid.lateral;
-  if (step.index % substeps == 0 && step.index / substeps < static_cast<std::size_t>(around)) {
-    const int g = ((around / 2 - static_cast<int>(step.index / substeps)) % around + around) % around;
+  if (index % substeps == 0 && index / substeps < static_cast<std::size_t>(around)) {
+    const int g = ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;
     revolution_.push_back(u_(across / 2, g));
   }
   if (!h5_) return;
-  const auto p = static_cast<std::size_t>(modes_.substeps()), length = strip_length();
-  for (std::size_t j = 0; j < static_cast<std::size_t>(grid.lateral); ++j)
-    for (std::size_t i = 0; i < static_cast<std::size_t>(grid.window); ++i)
-      road_strip_[j * length + i * p + step.index] =
-          static_cast<float>(step.road(static_cast<Eigen::Index>(i + static_cast<std::size_t>(grid.window) * j)));
   writing([&] {
-    // The window fields are [j][i] in C order: p = i + Nw·j is already that order.
-    const Eigen::VectorXd* fields[] = {&step.force, &step.road, &step.displacement};
-    for (std::size_t f = 0; f < window_streams_.size(); ++f) {
-      std::transform(fields[f]->data(), fields[f]->data() + fields[f]->size(), slice_.begin(),
-                     [](double value) { return static_cast<float>(value); });
-      window_streams_[f]->append(slice_.data());
-    }
     // The belt fields are Ny × Nθ column-major: written row by row ([y][around]).
     const auto row_major = [&](const Eigen::MatrixXd& field) {
       for (int j = 0; j < across; ++j)

@@ -54,6 +54,12 @@ struct SurfaceBlock {
   int across = 0;
 };
 
+// The mean contact patch of a run's first steps and the steady indentation (m): the radiating
+// body's flat.
+struct RadiatingPatch {
+  double length = 0.0, width = 0.0, indentation = 0.0;
+};
+
 struct TyreStepOutputSettings {
   ContactFields fields = ContactFields::contact;
   std::filesystem::path contact_h5;  // where contact.h5 goes (unused for ContactFields::none)
@@ -61,9 +67,10 @@ struct TyreStepOutputSettings {
   double speed = 0.0;                // m/s
   double load = 0.0;                 // N
   SurfaceBlock surface_block;
-  // The belt → radiation input mesh (belt_sampling.hpp), made once the steady rolling state is
-  // known (the radiating body is the tyre deformed by it); empty: no radiating velocity kept.
-  std::function<Eigen::SparseMatrix<double>(const SteadyRolling&)> tread_sampling;
+  // The belt → radiation input mesh (belt_sampling.hpp), made once the radiating body is known:
+  // the tyre flattened over the run's mean contact patch, measured over its first steps
+  // (all of them up to 4096: tyre_step_outputs.cpp). Empty: no radiating velocity kept.
+  std::function<Eigen::SparseMatrix<double>(const RadiatingPatch&)> tread_sampling;
   PointAveragedPsd* belt_psd = nullptr;  // receives every step's belt velocity (index j + Ny·g)
 };
 
@@ -93,6 +100,10 @@ class TyreStepOutputs final : public ContactStepSink {
 
  private:
   void open_contact_h5(const SurfaceResponse& response);
+  // The response stage and what follows it, for step `index` with its forces.
+  void respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force);
+  // The patch is measured: the mesh is made and the waiting steps respond.
+  void body_known();
   std::size_t strip_length() const;
   template <class Write>
   void writing(Write&& write);
@@ -110,7 +121,10 @@ class TyreStepOutputs final : public ContactStepSink {
   std::vector<Eigen::Index> cell_under_;  // belt cell (j + Ny·g) under each window point
   std::vector<float> slice_, blocks_;
   std::vector<float> road_strip_;  // Ny × ((Nw − 1)·p + samples), row-major
-  Eigen::SparseMatrix<double> sampling_;
+  Eigen::SparseMatrix<double> sampling_;  // empty until body_known()
+  double indentation_ = 0.0;
+  Eigen::MatrixXd patch_forces_;  // P × steps: the forces waiting for the radiating body
+  std::vector<double> patch_lengths_, patch_widths_;
   Eigen::MatrixXd tread_velocity_;
   Eigen::VectorXd snapshot_force_;
   double snapshot_total_ = -1.0, snapshot_time_ = 0.0;
