@@ -447,6 +447,17 @@ NonlinearSpringContact::NonlinearSpringContact(Eigen::MatrixXd structural, Eigen
 
 NonlinearSpringContact::~NonlinearSpringContact() = default;
 
+void NonlinearSpringContact::warm_start(const Eigen::Ref<const Eigen::VectorXd>& compression) {
+  Impl& m = *impl_;
+  if (compression.size() != m.size || !compression.allFinite())
+    throw std::invalid_argument("NonlinearSpringContact::warm_start: " + std::to_string(m.size) + " finite compressions expected");
+  // y = δ + A_pp·F(δ), F = k·δⁿ (the solver's coordinate).
+  const Eigen::VectorXd delta = compression.cwiseMax(0.0);
+  const Eigen::VectorXd force = m.k.cwiseProduct(delta.array().pow(m.n).matrix());
+  m.coordinate = delta + m.a.diagonal().cwiseMax(0.0).cwiseProduct(force);
+  m.has_previous = true;
+}
+
 const Eigen::VectorXd& NonlinearSpringContact::solve(const Eigen::Ref<const Eigen::VectorXd>& q) {
   Impl& m = *impl_;
   if (q.size() != m.size) {

@@ -28,6 +28,10 @@ class NonlinearSpringContact {
   NonlinearSpringContact(const NonlinearSpringContact&) = delete;
   NonlinearSpringContact& operator=(const NonlinearSpringContact&) = delete;
 
+  // The next solve starts from these compressions δ ≥ 0 (m) instead of the previous solution's:
+  // the last step's, for a solver made for this step's points.
+  void warm_start(const Eigen::Ref<const Eigen::VectorXd>& compression);
+
   // Solves for q (m), warm-started from the previous solution. Returns the forces F (N).
   // Throws std::runtime_error if KINSOL fails to converge.
   const Eigen::VectorXd& solve(const Eigen::Ref<const Eigen::VectorXd>& q);

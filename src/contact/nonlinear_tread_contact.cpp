@@ -22,6 +22,9 @@ const Eigen::VectorXd& NonlinearTreadContact::solve(const Eigen::Ref<const Eigen
   const Eigen::Index n = a_.rows();
   iterations_ = 0;
   for (Eigen::Index p = 0; p < n; ++p) candidate_[static_cast<std::size_t>(p)] = q(p) < 0.0 || force_(p) > 0.0;
+  // Each sub-problem starts from the last step's compressions (Newton then needs a few
+  // iterations instead of a solve from δ = 0), or, within a step, from the last round's.
+  previous_compression_ = compression_;
   const double tolerance = 1e-12 * std::max(q.cwiseAbs().maxCoeff(), 1e-300);
   for (int round = 0; round <= n; ++round) {
     std::vector<Eigen::Index> set;
@@ -41,11 +44,15 @@ const Eigen::VectorXd& NonlinearTreadContact::solve(const Eigen::Ref<const Eigen
       // A new solver per sub-problem: its size changes from step to step. (This allocates in
       // the step loop, which the linear treads do not.)
       NonlinearSpringContact sub(std::move(a), std::move(k), exponent_, require_symmetric_);
+      Eigen::VectorXd start(m);
+      for (Eigen::Index b = 0; b < m; ++b) start(b) = previous_compression_(set[b]);
+      sub.warm_start(start);
       const Eigen::VectorXd& f = sub.solve(qc);
       iterations_ += sub.iterations();
       for (Eigen::Index b = 0; b < m; ++b) {
         force_(set[b]) = f(b);
         compression_(set[b]) = sub.compression()(b);
+        previous_compression_(set[b]) = sub.compression()(b);
       }
     }
     gap_.noalias() = a_ * force_;

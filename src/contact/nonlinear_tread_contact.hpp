@@ -31,6 +31,7 @@ class NonlinearTreadContact {
   double exponent_;
   bool require_symmetric_;
   Eigen::VectorXd force_, compression_, gap_;
+  Eigen::VectorXd previous_compression_;  // the warm start of the next sub-problem
   std::vector<char> candidate_;
   int iterations_ = 0;
 };

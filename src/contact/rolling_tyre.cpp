@@ -185,7 +185,8 @@ SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::Matri
 
 TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
-                                       ProgressReporter* progress, const NonlinearTread* nonlinear) {
+                                       ProgressReporter* progress, const NonlinearTread* nonlinear,
+                                       ContactStepSink* sink) {
   const TyreGrid& grid = modes.grid();
   const Eigen::Index points = grid.points();
   const double dt = modes.time_step();
@@ -280,9 +281,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   trace.steady_rolling_resistance = steady.rolling_resistance;
   const auto rows = static_cast<Eigen::Index>(samples);
   trace.time.resize(rows);
-  trace.force.resize(rows, points);
-  trace.displacement.resize(rows, points);
-  trace.road.resize(rows, points);
+  if (settings.keep_fields) {
+    trace.force.resize(rows, points);
+    trace.displacement.resize(rows, points);
+    trace.road.resize(rows, points);
+  }
   trace.total_force.resize(rows);
   trace.contact_area.resize(rows);
   trace.contact_length.resize(rows);
@@ -306,6 +309,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   std::vector<Eigen::VectorXd> deformation_ring(static_cast<std::size_t>(substeps), steady.deformation);
   const double cell_area = grid.dx() * grid.dy();
   bool edge_warned = false;
+  if (sink) sink->start(steady);
   const auto loop_started = std::chrono::steady_clock::now();
   // Column i meets the road at step n at x = x(i) + V·n·Δt = x(0) + (i·p + n)·dx/p: the height
   // that column i + 1 met p steps earlier. The filtered heights are kept by m = i·p + n in a ring
@@ -378,24 +382,17 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
 
     const auto row = static_cast<Eigen::Index>(n);
     trace.time(row) = t;
-    trace.force.row(row) = force.transpose();
-    trace.displacement.row(row) = position.transpose();
-    trace.road.row(row) = r.transpose();
+    if (settings.keep_fields) {
+      trace.force.row(row) = force.transpose();
+      trace.displacement.row(row) = position.transpose();
+      trace.road.row(row) = r.transpose();
+    }
     trace.total_force(row) = force.sum();
-    int in_contact = 0, i_min = grid.window, i_max = -1, j_min = grid.lateral, j_max = -1;
-    for (int j = 0; j < grid.lateral; ++j)
-      for (int i = 0; i < grid.window; ++i)
-        if (force(i + static_cast<Eigen::Index>(grid.window) * j) > 0.0) {
-          ++in_contact;
-          i_min = std::min(i_min, i);
-          i_max = std::max(i_max, i);
-          j_min = std::min(j_min, j);
-          j_max = std::max(j_max, j);
-        }
-    trace.contact_area(row) = in_contact * cell_area;
-    trace.contact_length(row) = in_contact ? (i_max - i_min + 1) * grid.dx() : 0.0;
-    trace.contact_width(row) = in_contact ? (j_max - j_min + 1) * grid.dy() : 0.0;
-    if (!edge_warned && in_contact && (i_min == 0 || i_max == grid.window - 1)) {
+    const ContactExtent extent = contact_extent(grid, force);
+    trace.contact_area(row) = extent.points * cell_area;
+    trace.contact_length(row) = extent.length(grid);
+    trace.contact_width(row) = extent.width(grid);
+    if (!edge_warned && extent.points && (extent.i_min == 0 || extent.i_max == grid.window - 1)) {
       trace.warnings.push_back("the contact reaches the edge of the contact window at t = " + std::to_string(t) +
                                " s: lengthen [rolling] contact_window");
       edge_warned = true;
@@ -412,9 +409,15 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+    if (sink) {
+      clock = std::chrono::steady_clock::now();
+      sink->take(ContactStep{n, t, force, position, r});
+      trace.sink_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+    }
     if (progress) progress->update(n);
   }
-  trace.step_loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count();
+  trace.step_loop_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count() - trace.sink_seconds;
   if (lcp) {
     trace.lcp_factorisations = lcp->factorisations();
     trace.lcp_cg_iterations = lcp->cg_iterations();

@@ -57,6 +57,10 @@ struct TyreRunSettings {
   // wavelength 2·dx that the window's points resolve, the mean over its cell's length along the
   // road [x − dx/2, x + dx/2], or the point value r(x).
   RoadSampling road_sampling = RoadSampling::lowpass;
+  // Whether the trace keeps the window fields of every step (force, displacement, road:
+  // samples × points each). A run that streams them through a ContactStepSink does not, so its
+  // memory does not grow with its length.
+  bool keep_fields = true;
 };
 
 struct TyreContactTrace {
@@ -89,6 +93,7 @@ struct TyreContactTrace {
   double step_loop_seconds = 0.0;  // wall time of the time-step loop alone (no setup)
   double history_seconds = 0.0;    // of which in the history engine (u⁰ and the update)
   double lcp_seconds = 0.0;        // of which in the contact problem of each step (LCP or KINSOL)
+  double sink_seconds = 0.0;       // in the ContactStepSink, not counted in step_loop_seconds
   long lcp_factorisations = -1;    // dense factorisations of the LCP's basic block (−1: KINSOL)
   long lcp_cg_iterations = 0;      // conjugate-gradient iterations (a well-conditioned symmetric step)
 };
@@ -108,12 +113,31 @@ struct NonlinearTread {
   double exponent = 1.0;      // n ≥ 1
 };
 
+// One step of a rolling run as the loop produces it, over the window (p = i + Nw·j).
+struct ContactStep {
+  std::size_t index = 0;
+  double time = 0.0;                    // s
+  const Eigen::VectorXd& force;         // N
+  const Eigen::VectorXd& displacement;  // tread surface position, road datum, m
+  const Eigen::VectorXd& road;          // m
+};
+
+// Takes each step as the contact loop produces it (the response stage and the streamed outputs
+// of a run), so that the run need not hold its fields (issue 13: memory flat with run length).
+class ContactStepSink {
+ public:
+  virtual ~ContactStepSink() = default;
+  // Once, before the first step: the steady rolling state the run starts from.
+  virtual void start(const SteadyRolling& steady) = 0;
+  virtual void take(const ContactStep& step) = 0;
+};
+
 SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                    double load, const NonlinearTread* nonlinear = nullptr);
 
 TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
                                        const RoadSurface& road, const TyreRunSettings& settings,
                                        ProgressReporter* progress = nullptr,
-                                       const NonlinearTread* nonlinear = nullptr);
+                                       const NonlinearTread* nonlinear = nullptr, ContactStepSink* sink = nullptr);
 
 }  // namespace rollnoise

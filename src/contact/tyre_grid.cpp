@@ -1,5 +1,7 @@
 #include "contact/tyre_grid.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -54,6 +56,27 @@ void TyreGrid::validate() const {
   if (crown_radius < 0.0) throw std::invalid_argument("crown_radius must be >= 0");
   if (tread_width < 0.0 || tread_width > width)
     throw std::invalid_argument("tread_width must lie between 0 and the belt width");
+}
+
+ContactExtent contact_extent(const TyreGrid& grid, const Eigen::Ref<const Eigen::VectorXd>& force) {
+  ContactExtent e;
+  int i_min = grid.window, i_max = -1, j_min = grid.lateral, j_max = -1;
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 0; i < grid.window; ++i)
+      if (force(i + static_cast<Eigen::Index>(grid.window) * j) > 0.0) {
+        ++e.points;
+        i_min = std::min(i_min, i);
+        i_max = std::max(i_max, i);
+        j_min = std::min(j_min, j);
+        j_max = std::max(j_max, j);
+      }
+  if (e.points) {
+    e.i_min = i_min;
+    e.i_max = i_max;
+    e.j_min = j_min;
+    e.j_max = j_max;
+  }
+  return e;
 }
 
 }  // namespace rollnoise

@@ -34,4 +34,14 @@ struct TyreGrid {
   void validate() const;
 };
 
+// The points in contact (force > 0) of a window field, and their extent: columns i_min..i_max
+// along x, rows j_min..j_max across (all −1 without contact).
+struct ContactExtent {
+  int points = 0;
+  int i_min = -1, i_max = -1, j_min = -1, j_max = -1;
+  double length(const TyreGrid& grid) const { return points ? (i_max - i_min + 1) * grid.dx() : 0.0; }
+  double width(const TyreGrid& grid) const { return points ? (j_max - j_min + 1) * grid.dy() : 0.0; }
+};
+ContactExtent contact_extent(const TyreGrid& grid, const Eigen::Ref<const Eigen::VectorXd>& force);
+
 }  // namespace rollnoise

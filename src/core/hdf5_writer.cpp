@@ -2,12 +2,20 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/hdf5_handle.hpp"
 
 namespace rollnoise {
 namespace {
+
+// HDF5 closes what is still open when the process exits (an atexit handler). A file whose
+// writes failed (a full disk, a file-size limit) cannot be closed, and libhdf5 1.10 crashes
+// (SIGSEGV in H5F__close_cb) when its handler tries again at exit, turning a clean "cannot
+// write" and exit status 1 into a crash. Every HDF5 object here is closed by RAII, so the
+// handler has nothing to do: it is switched off before main() makes any HDF5 call.
+[[maybe_unused]] const bool hdf5_exit_handler_off = H5dont_atexit() >= 0;
 
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
@@ -149,36 +157,66 @@ void Hdf5Writer::integer_attribute(const std::string& object, const std::string&
 std::unique_ptr<Hdf5Writer::SliceStream> Hdf5Writer::slices(const std::string& path, std::size_t count,
                                                             std::size_t rows, std::size_t cols,
                                                             const std::string& units,
-                                                            const std::string& description) {
-  const hsize_t dims[3] = {count, rows, cols};
-  const hsize_t chunk[3] = {1, rows, cols};
-  Handle space(checked(H5Screate_simple(3, dims, nullptr), "space"), H5Sclose);
+                                                            const std::string& description, StreamLayout layout) {
+  if (count == 0 || cols == 0) throw std::invalid_argument("HDF5 slice stream " + path + ": no values");
+  const bool three_d = rows > 0;
+  const std::size_t chunk_slices = std::clamp<std::size_t>(layout.chunk_slices, 1, count);
+  const hsize_t dims[3] = {count, three_d ? rows : cols, cols};
+  const hsize_t chunk[3] = {chunk_slices, three_d ? rows : cols, cols};
+  const int rank = three_d ? 3 : 2;
+  Handle space(checked(H5Screate_simple(rank, dims, nullptr), "space"), H5Sclose);
   Handle properties(checked(H5Pcreate(H5P_DATASET_CREATE), "properties"), H5Pclose);
-  check(H5Pset_chunk(properties.get(), 3, chunk), "chunking");
-  // No compression: vibration fields hardly compress (measured ~20 % with shuffle + deflate),
-  // and deflate made writing the slower half of a tyre run's outputs.
+  check(H5Pset_chunk(properties.get(), rank, chunk), "chunking");
+  if (layout.deflate_level > 0) {
+    if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) <= 0) throw std::runtime_error("HDF5: this libhdf5 has no deflate filter");
+    check(H5Pset_shuffle(properties.get()), "shuffle filter");
+    check(H5Pset_deflate(properties.get(), static_cast<unsigned>(std::min(layout.deflate_level, 9))), "deflate filter");
+  }
   const Handle links = link_creation_with_parents();
   const hid_t dataset = checked(H5Dcreate2(file_, path.c_str(), H5T_IEEE_F32LE, space.get(), links.get(),
                                            properties.get(), H5P_DEFAULT),
                                 "dataset " + path);
-  describe(dataset, units, description);
-  return std::unique_ptr<SliceStream>(new SliceStream(dataset, count, rows, cols));
+  try {
+    describe(dataset, units, description);
+  } catch (...) {
+    H5Dclose(dataset);
+    throw;
+  }
+  return std::unique_ptr<SliceStream>(new SliceStream(dataset, count, three_d ? rows : 1, cols, chunk_slices));
 }
 
-Hdf5Writer::SliceStream::SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols)
-    : dataset_(dataset), count_(count), rows_(rows), cols_(cols) {}
+Hdf5Writer::SliceStream::SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols,
+                                     std::size_t chunk_slices)
+    : dataset_(dataset), count_(count), rows_(rows), cols_(cols), chunk_slices_(chunk_slices) {
+  buffer_.reserve(chunk_slices_ * rows_ * cols_);
+}
 
 Hdf5Writer::SliceStream::~SliceStream() { H5Dclose(dataset_); }
 
 void Hdf5Writer::SliceStream::append(const float* slice) {
   if (written_ >= count_) throw std::logic_error("HDF5 slice stream: more slices than declared");
-  Handle file_space(checked(H5Dget_space(dataset_), "space"), H5Sclose);
-  const hsize_t start[3] = {written_, 0, 0};
-  const hsize_t size[3] = {1, rows_, cols_};
-  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, size, nullptr), "selection");
-  Handle memory(checked(H5Screate_simple(3, size, nullptr), "memory space"), H5Sclose);
-  check(H5Dwrite(dataset_, H5T_NATIVE_FLOAT, memory.get(), file_space.get(), H5P_DEFAULT, slice), "write slice");
+  buffer_.insert(buffer_.end(), slice, slice + rows_ * cols_);
   ++written_;
+  if (written_ - flushed_ == chunk_slices_) flush();
+}
+
+void Hdf5Writer::SliceStream::finish() {
+  if (written_ > flushed_) flush();
+}
+
+// One whole chunk (or the last, partial one) in a single write: a filtered chunk is compressed
+// once, not read back and recompressed per slice.
+void Hdf5Writer::SliceStream::flush() {
+  Handle file_space(checked(H5Dget_space(dataset_), "space"), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(file_space.get());
+  const hsize_t start[3] = {flushed_, 0, 0};
+  const hsize_t size[3] = {written_ - flushed_, rank == 3 ? rows_ : cols_, cols_};
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, size, nullptr), "selection");
+  Handle memory(checked(H5Screate_simple(rank, size, nullptr), "memory space"), H5Sclose);
+  check(H5Dwrite(dataset_, H5T_NATIVE_FLOAT, memory.get(), file_space.get(), H5P_DEFAULT, buffer_.data()),
+        "write slices");
+  flushed_ = written_;
+  buffer_.clear();
 }
 
 }  // namespace rollnoise

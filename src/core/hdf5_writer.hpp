@@ -13,6 +13,15 @@
 
 namespace rollnoise {
 
+// How a streamed dataset is stored: `chunk_slices` slices to an HDF5 chunk (the stream keeps
+// one chunk in memory and writes it whole), and HDF5's shuffle + deflate at `deflate_level`
+// (1–9; 0: none). Shuffle groups the bytes of equal significance, so the zeros outside the
+// contact and the slowly varying high bytes compress (measured in README, "Memory and output size").
+struct Hdf5StreamLayout {
+  std::size_t chunk_slices = 1;
+  int deflate_level = 0;
+};
+
 class Hdf5Writer {
  public:
   // Creates (or truncates) the file. Throws std::runtime_error on failure.
@@ -43,8 +52,10 @@ class Hdf5Writer {
   // A 64-bit integer attribute (named apart from attribute(): an int argument would be ambiguous).
   void integer_attribute(const std::string& object, const std::string& name, std::int64_t value);
 
-  // A 3-D float dataset [count][rows][cols] written one [rows][cols] slice at a time, chunked
-  // by slice, for fields too large to keep in memory.
+  using StreamLayout = Hdf5StreamLayout;
+
+  // A float dataset [count][rows][cols] (or [count][cols] when rows is 0) written one slice at a
+  // time, for fields too large to keep in memory.
   class SliceStream {
    public:
     ~SliceStream();
@@ -52,16 +63,22 @@ class Hdf5Writer {
     SliceStream& operator=(const SliceStream&) = delete;
     // `slice` holds rows × cols values in C order (row-major).
     void append(const float* slice);
+    // Writes the slices still buffered; throws if HDF5 cannot. Call once all slices are in
+    // (the destructor discards a partial chunk: it runs only when a run failed anyway).
+    void finish();
     std::size_t written() const noexcept { return written_; }
 
    private:
     friend class Hdf5Writer;
-    SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols);
+    SliceStream(std::int64_t dataset, std::size_t count, std::size_t rows, std::size_t cols, std::size_t chunk_slices);
+    void flush();
     std::int64_t dataset_;
-    std::size_t count_, rows_, cols_, written_ = 0;
+    std::size_t count_, rows_, cols_, chunk_slices_, written_ = 0, flushed_ = 0;
+    std::vector<float> buffer_;  // slices written_ − flushed_ of the current chunk
   };
   std::unique_ptr<SliceStream> slices(const std::string& path, std::size_t count, std::size_t rows,
-                                      std::size_t cols, const std::string& units, const std::string& description);
+                                      std::size_t cols, const std::string& units, const std::string& description,
+                                      StreamLayout layout = {});
 
  private:
   std::int64_t file_;

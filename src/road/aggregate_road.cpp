@@ -1,9 +1,11 @@
 #include "road/aggregate_road.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -68,16 +70,17 @@ Checked check(const AggregateRoadSpec& spec) {
   return k;
 }
 
-// The visible upper surface over the grid x = i h (i < x_count), y = (j - half_y) h
-// (j < 2 half_y + 1), mean removed and lead-in window applied, row-major in x.
-std::vector<double> build_heights(const AggregateRoadSpec& spec, const Checked& k, std::size_t x_count,
-                                  std::size_t half_y) {
-  const double h = k.spacing;
-  const std::size_t y_count = 2 * half_y + 1;
-  const double reach = spec.elongation * k.dmax / 2.0;  // largest semi-axis
-  const double x_lo = -reach;
-  const double x_hi = h * static_cast<double>(x_count - 1) + reach;
-  const double y_half = h * static_cast<double>(half_y) + reach;
+// One stone of the mix: its footprint's centre, semi-axes a (along its angle) and b, thickness
+// semi-axis c, and the angle's cosine and sine.
+struct Stone {
+  double x, y, a, b, c, cs, sn;
+};
+
+// The stones whose footprints' centres fall in [x_lo, x_hi) × [−y_half, y_half], drawn from
+// `engine` until their footprints add up to −ln(1 − coverage) of the area (as a Boolean model of
+// that coverage would), four draws per stone in the order x, y, size, angle.
+std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine, double x_lo,
+                                double x_hi, double y_half) {
   const double area = (x_hi - x_lo) * 2.0 * y_half;
   const double footprint_needed = -std::log1p(-spec.coverage) * area;
   const double smallest = std::numbers::pi * spec.elongation * k.dmin * k.dmin / 4.0;
@@ -85,21 +88,13 @@ std::vector<double> build_heights(const AggregateRoadSpec& spec, const Checked& 
     throw_bad("length", "the road would hold up to " + format_number(footprint_needed / smallest) +
                             " stones, more than the limit of 2^25; use a shorter length (or width)");
   }
-
-  const double thickness = spec.shape_factor * k.dmax;  // T
-  const double binder = spec.binder_level * thickness;
-  const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
-  std::vector<double> z(x_count * y_count, binder);
-
   // Number density of sizes ∝ d^(e-4) on [dmin, dmax], drawn by inverting its distribution.
   const double p = spec.grading_exponent - 3.0;  // in [-3, -1): never 0
   const double lo_p = std::pow(k.dmin, p);
   const double hi_p = std::pow(k.dmax, p);
-
-  std::mt19937_64 engine(spec.seed);
+  std::vector<Stone> stones;
   double footprint = 0.0;
   while (footprint < footprint_needed) {
-    // Four draws per stone, in this order: x, y, size, angle.
     const double x = x_lo + (x_hi - x_lo) * portable::uniform_closed_open(engine);
     const double y = -y_half + 2.0 * y_half * portable::uniform_closed_open(engine);
     const double u = portable::uniform_closed_open(engine);
@@ -107,13 +102,27 @@ std::vector<double> build_heights(const AggregateRoadSpec& spec, const Checked& 
     const double d = k.dmin == k.dmax ? k.dmax : std::clamp(std::pow(lo_p + u * (hi_p - lo_p), 1.0 / p), k.dmin, k.dmax);
     const double b = d / 2.0;
     const double a = spec.elongation * b;
-    const double c = spec.shape_factor * b;
     footprint += std::numbers::pi * a * b;
+    stones.push_back({x, y, a, b, spec.shape_factor * b, std::cos(angle), std::sin(angle)});
+  }
+  return stones;
+}
+
+// Raises the grid x = (first + i) h (i < x_count), y = (j − half_y) h (j < 2 half_y + 1),
+// row-major in x, to the upper surface of each stone over it. The maximum does not depend on the
+// order of the stones.
+void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std::vector<Stone>& stones,
+                     std::size_t first, std::size_t x_count, std::size_t half_y, std::vector<double>& z) {
+  const double h = k.spacing;
+  const std::size_t y_count = 2 * half_y + 1;
+  const double thickness = spec.shape_factor * k.dmax;  // T
+  const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
+  const double origin = h * static_cast<double>(first);
+  for (const Stone& s : stones) {
+    const double x = s.x - origin, y = s.y, a = s.a, b = s.b, c = s.c, cs = s.cs, sn = s.sn;
     // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); positive:
     // resting on z = 0; negative: cut at the top plane z = T.
     const double z_c = negative ? thickness - (1.0 - negative_cut_fraction) * c : c;
-    const double cs = std::cos(angle);
-    const double sn = std::sin(angle);
     const double i_lo = std::max(0.0, std::ceil((x - a) / h));
     const double i_hi = std::min(static_cast<double>(x_count - 1), std::floor((x + a) / h));
     const double j_lo = std::max(0.0, std::ceil((y - a) / h + static_cast<double>(half_y)));
@@ -134,14 +143,44 @@ std::vector<double> build_heights(const AggregateRoadSpec& spec, const Checked& 
       }
     }
   }
+}
 
-  double mean = 0.0;
+double reach_of(const AggregateRoadSpec& spec, const Checked& k) { return spec.elongation * k.dmax / 2.0; }  // largest semi-axis
+
+// The visible upper surface over the grid x = i h (i < x_count), y = (j - half_y) h
+// (j < 2 half_y + 1), row-major in x, before its mean is removed: the stones of the whole grid
+// (centres within a stone's reach of it) from the spec's seed. `mean` receives its mean.
+std::vector<double> raw_heights(const AggregateRoadSpec& spec, const Checked& k, std::size_t x_count,
+                                std::size_t half_y, double& mean) {
+  const double h = k.spacing;
+  const double reach = reach_of(spec, k);
+  std::mt19937_64 engine(spec.seed);
+  const std::vector<Stone> stones =
+      place_stones(spec, k, engine, -reach, h * static_cast<double>(x_count - 1) + reach, h * static_cast<double>(half_y) + reach);
+  std::vector<double> z(x_count * (2 * half_y + 1), spec.binder_level * (spec.shape_factor * k.dmax));
+  raise_to_stones(spec, k, stones, 0, x_count, half_y, z);
+  mean = 0.0;
   for (double v : z) mean += v;
   mean /= static_cast<double>(z.size());
+  return z;
+}
+
+// Removes `mean` and applies the lead-in window (x = (first + i) h).
+void remove_mean(const Checked& k, double mean, std::size_t first, std::size_t y_count, std::vector<double>& z) {
+  const std::size_t x_count = z.size() / y_count;
   for (std::size_t i = 0; i < x_count; ++i) {
-    const double w = lead_in_window(h * static_cast<double>(i), k.lead_in);
+    const double w = lead_in_window(k.spacing * static_cast<double>(first + i), k.lead_in);
     for (std::size_t j = 0; j < y_count; ++j) z[i * y_count + j] = w * (z[i * y_count + j] - mean);
   }
+}
+
+// The visible upper surface over the grid x = i h (i < x_count), y = (j - half_y) h
+// (j < 2 half_y + 1), mean removed and lead-in window applied, row-major in x.
+std::vector<double> build_heights(const AggregateRoadSpec& spec, const Checked& k, std::size_t x_count,
+                                  std::size_t half_y) {
+  double mean = 0.0;
+  std::vector<double> z = raw_heights(spec, k, x_count, half_y, mean);
+  remove_mean(k, mean, 0, 2 * half_y + 1, z);
   return z;
 }
 
@@ -184,12 +223,19 @@ std::unique_ptr<SampledProfile> make_aggregate_profile(const AggregateRoadSpec& 
   return std::make_unique<SampledProfile>("aggregate", k.spacing, std::move(z));
 }
 
-std::unique_ptr<SampledSurface> make_aggregate_surface(const AggregateRoadSpec& spec) {
+namespace {
+
+// The grid of a surface up to max(length, x_max): the last sample index along x and half_y;
+// every size checked.
+struct SurfaceGrid {
+  std::size_t last = 0, half_y = 0;
+};
+
+SurfaceGrid surface_grid(const AggregateRoadSpec& spec, const Checked& k) {
   if (!std::isfinite(spec.x_max)) throw std::invalid_argument("make_aggregate_surface: x_max must be finite");
   if (!(spec.half_width >= 0.0) || !std::isfinite(spec.half_width)) {
     throw std::invalid_argument("make_aggregate_surface: half_width must be finite and >= 0");
   }
-  const Checked k = check(spec);
   require_in("width", spec.width, 0.0, true, std::numeric_limits<double>::max(), false, "(0, inf) m");
   if (spec.half_width > spec.width / 2.0) {
     throw_bad("width", "the surface is " + format_number(spec.width) +
@@ -197,16 +243,116 @@ std::unique_ptr<SampledSurface> make_aggregate_surface(const AggregateRoadSpec& 
                            format_number(spec.half_width) + " m; set width to at least " +
                            format_number(2.0 * spec.half_width) + " m");
   }
-  const std::size_t last = points_to(std::max(spec.length, spec.x_max), k.spacing, "sample_spacing");
-  const std::size_t half_y = points_to(spec.width / 2.0, k.spacing, "sample_spacing");
-  const double points = static_cast<double>(last + 1) * static_cast<double>(2 * half_y + 1);
+  SurfaceGrid g;
+  g.last = points_to(std::max(spec.length, spec.x_max), k.spacing, "sample_spacing");
+  g.half_y = points_to(spec.width / 2.0, k.spacing, "sample_spacing");
+  const double points = static_cast<double>(g.last + 1) * static_cast<double>(2 * g.half_y + 1);
   if (points > static_cast<double>(max_synthesis_points)) {
     throw_bad("sample_spacing", "the surface needs " + format_number(points) +
                                     " samples, more than the limit of 2^26; use a larger sample_spacing, a "
                                     "shorter length or a smaller width");
   }
-  std::vector<double> z = build_heights(spec, k, last + 1, half_y);
-  return std::make_unique<SampledSurface>("aggregate", k.spacing, last + 1, 2 * half_y + 1, std::move(z));
+  return g;
+}
+
+}  // namespace
+
+std::unique_ptr<SampledSurface> make_aggregate_surface(const AggregateRoadSpec& spec) {
+  const Checked k = check(spec);
+  const SurfaceGrid g = surface_grid(spec, k);
+  std::vector<double> z = build_heights(spec, k, g.last + 1, g.half_y);
+  return std::make_unique<SampledSurface>("aggregate", k.spacing, g.last + 1, 2 * g.half_y + 1, std::move(z));
+}
+
+namespace {
+
+// See make_rolling_aggregate_surface.
+class TiledAggregateSurface final : public RoadSurface {
+ public:
+  TiledAggregateSurface(const AggregateRoadSpec& spec, std::size_t tile_samples, std::size_t half_y)
+      : spec_(spec), k_(check(spec)), tile_samples_(tile_samples), half_y_(half_y) {
+    // Tile 0: the road make_aggregate_surface makes for `length`, and the mean every tile removes.
+    std::vector<double> z = raw_heights(spec_, k_, tile_samples_ + 1, half_y_, mean_);
+    remove_mean(k_, mean_, 0, 2 * half_y_ + 1, z);
+    tiles_[0] = {0, std::move(z)};
+    tiles_[1] = {std::numeric_limits<std::size_t>::max(), {}};
+  }
+
+  std::string type() const override { return "aggregate"; }
+
+  double height(double x, double y) const override {
+    if (x < 0.0) return 0.0;
+    const double tile_length = k_.spacing * static_cast<double>(tile_samples_);
+    // The tile whose stretch holds x; its grid ends on the next tile's first line, so a point
+    // on a boundary is interpolated within either.
+    auto index = static_cast<std::size_t>(std::floor(x / tile_length));
+    if (index > 0 && x - tile_length * static_cast<double>(index) < 0.0) --index;
+    const std::lock_guard lock(mutex_);
+    const std::vector<double>& z = tile(index);
+    return grid_height(z.data(), 2 * half_y_ + 1, tile_samples_ + 1, 2 * half_y_ + 1, k_.spacing,
+                       x - tile_length * static_cast<double>(index), y, "aggregate");
+  }
+
+ private:
+  struct Tile {
+    std::size_t index;
+    std::vector<double> heights;
+  };
+
+  // The stones centred in tile k's stretch: tile 0's are those make_aggregate_surface places
+  // (centres in [−reach, L + reach)); tile k ≥ 1's are centred in [kL + reach, (k+1)L + reach).
+  std::vector<Stone> stones_of(std::size_t index) const {
+    const double h = k_.spacing, reach = reach_of(spec_, k_);
+    const double length = h * static_cast<double>(tile_samples_), y_half = h * static_cast<double>(half_y_) + reach;
+    if (index == 0) {
+      std::mt19937_64 engine(spec_.seed);
+      return place_stones(spec_, k_, engine, -reach, length + reach, y_half);
+    }
+    std::seed_seq seeds{static_cast<std::uint32_t>(spec_.seed), static_cast<std::uint32_t>(spec_.seed >> 32),
+                        static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32)};
+    std::mt19937_64 engine(seeds);
+    const double start = length * static_cast<double>(index) + reach;
+    return place_stones(spec_, k_, engine, start, start + length, y_half);
+  }
+
+  const std::vector<double>& tile(std::size_t index) const {
+    for (const Tile& t : tiles_)
+      if (t.index == index) return t.heights;
+    // Replace the tile farther from this one (an empty slot first): the tyre reads two
+    // neighbouring tiles around a boundary, and moves on.
+    const auto distance = [index](const Tile& t) {
+      if (t.index == std::numeric_limits<std::size_t>::max()) return std::numeric_limits<std::size_t>::max();
+      return t.index > index ? t.index - index : index - t.index;
+    };
+    Tile& slot = distance(tiles_[0]) >= distance(tiles_[1]) ? tiles_[0] : tiles_[1];
+    std::vector<double> z((tile_samples_ + 1) * (2 * half_y_ + 1), spec_.binder_level * (spec_.shape_factor * k_.dmax));
+    const std::size_t first = index * tile_samples_;
+    for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
+      raise_to_stones(spec_, k_, stones_of(neighbour), first, tile_samples_ + 1, half_y_, z);
+    remove_mean(k_, mean_, first, 2 * half_y_ + 1, z);
+    slot = {index, std::move(z)};
+    return slot.heights;
+  }
+
+  AggregateRoadSpec spec_;
+  Checked k_;
+  std::size_t tile_samples_, half_y_;
+  double mean_ = 0.0;
+  // A cache behind a const interface (RoadSurface::height): the two tiles nearest the tyre.
+  mutable std::array<Tile, 2> tiles_;
+  mutable std::mutex mutex_;
+};
+
+}  // namespace
+
+std::unique_ptr<RoadSurface> make_rolling_aggregate_surface(const AggregateRoadSpec& spec) {
+  if (!std::isfinite(spec.x_max)) throw std::invalid_argument("make_rolling_aggregate_surface: x_max must be finite");
+  if (!(spec.x_max > spec.length)) return make_aggregate_surface(spec);
+  // Every key and size is checked for one tile: the run's length costs no memory.
+  AggregateRoadSpec tile = spec;
+  tile.x_max = spec.length;
+  const SurfaceGrid g = surface_grid(tile, check(tile));
+  return std::make_unique<TiledAggregateSurface>(spec, g.last, g.half_y);
 }
 
 }  // namespace rollnoise

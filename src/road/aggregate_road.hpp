@@ -77,4 +77,13 @@ void read_aggregate_keys(const ConfigTable& road, AggregateRoadSpec& spec, bool 
 std::unique_ptr<SampledProfile> make_aggregate_profile(const AggregateRoadSpec& spec);
 std::unique_ptr<SampledSurface> make_aggregate_surface(const AggregateRoadSpec& spec);
 
+// The surface a rolling tyre needs up to spec.x_max, in memory that does not grow with x_max
+// (issue 13). Up to spec.length it is make_aggregate_surface's road, sample for sample. A longer
+// run continues it in tiles of that length, each generated when the tyre first reaches it: tile
+// k ≥ 1 holds the stones centred in its own stretch, drawn from a seed of its own (seed, k), so
+// the stone density is the same everywhere and the tiles join without a seam (a tile's samples
+// take the stones of its neighbours that reach over); its heights are referred to tile 0's mean.
+// At most two tiles are held. A run of at most `length` gets the SampledSurface itself.
+std::unique_ptr<RoadSurface> make_rolling_aggregate_surface(const AggregateRoadSpec& spec);
+
 }  // namespace rollnoise

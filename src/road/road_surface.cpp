@@ -71,7 +71,7 @@ std::unique_ptr<RoadSurface> make_aggregate_map(const ConfigTable& road, double 
   spec.x_max = x_max;
   spec.half_width = half_width;
   road.reject_unknown_keys();
-  return build_named(road, [&] { return make_aggregate_surface(spec); });
+  return build_named(road, [&] { return make_rolling_aggregate_surface(spec); });
 }
 
 std::unique_ptr<RoadSurface> make_height_map(const ConfigTable& road, double x_min, double x_max,

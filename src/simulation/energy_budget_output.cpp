@@ -11,6 +11,7 @@
 #include "contact/contact_force_estimate.hpp"
 #include "contact/texture_under_contact.hpp"
 #include "core/csv.hpp"
+#include "core/output_directory.hpp"
 #include "core/gnuplot.hpp"
 #include "greens/plate_mobility_average.hpp"
 #include "radiation/radiation_efficiency.hpp"
@@ -68,7 +69,7 @@ std::vector<std::vector<double>> belt_budget_weights(int around, int across, dou
   return w;
 }
 
-TyreBudget tyre_budget(const TyreContactTrace& trace, const TyreGrid& grid, const KroppPlate& plate,
+TyreBudget tyre_budget(const TyreContactTrace& trace, const TextureUnderContact& texture, const KroppPlate& plate,
                        const PointAveragedPsd& belt_psd, double speed, double sample_rate,
                        std::vector<FractionalOctaveBand> bands, double contact_stiffness) {
   TyreBudget b;
@@ -81,13 +82,13 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TyreGrid& grid, cons
   b.patch_width = std::min(trace.contact_width.mean(), plate.parameters().width);
 
   // Texture: the centre line(s), band powers averaged over the lines; and the patch mean.
-  const std::vector<std::vector<double>> lines = centre_line_road(trace, grid);
+  const std::vector<std::vector<double>>& lines = texture.centre_lines();
   b.texture_centre.assign(b.bands.size(), 0.0);
   for (const std::vector<double>& line : lines) {
     const std::vector<double> ms = fluctuation_band_mean_squares(line, sample_rate, b.bands, b.segment_length);
     for (std::size_t i = 0; i < ms.size(); ++i) b.texture_centre[i] += ms[i] / static_cast<double>(lines.size());
   }
-  b.texture_patch = fluctuation_band_mean_squares(patch_mean_road(trace, grid, b.patch_length), sample_rate, b.bands,
+  b.texture_patch = fluctuation_band_mean_squares(texture.patch_mean(b.patch_length), sample_rate, b.bands,
                                                   b.segment_length);
   const std::span<const double> force(trace.total_force.data(), static_cast<std::size_t>(trace.total_force.size()));
   b.force = fluctuation_band_mean_squares(force, sample_rate, b.bands, b.segment_length);
@@ -219,8 +220,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
       if (!std::isfinite(v)) v = -999.0;  // a zero power: no level (the CSV holds finite numbers)
     csv.row(values.data(), values.size());
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write budget.csv");
+  close_output_file(out, dir / "budget.csv");
 
   if (plots) {
     // Columns (1-based) of the lines drawn.

@@ -18,6 +18,7 @@
 #include "acoustics/band_power.hpp"
 #include "acoustics/sound_levels.hpp"
 #include "contact/rolling_tyre.hpp"
+#include "contact/texture_under_contact.hpp"
 #include "contact/tyre_grid.hpp"
 #include "greens/kropp_plate.hpp"
 #include "radiation/equivalent_sources.hpp"
@@ -56,8 +57,8 @@ std::vector<FractionalOctaveBand> budget_bands(double sample_rate, double top_hz
 std::vector<std::vector<double>> belt_budget_weights(int around, int across, double circumference);
 
 // The contact and response lines, and their estimates. belt_psd: the belt velocity's PSD
-// averaged with belt_budget_weights. contact_stiffness: k_c of the single-point estimate.
-TyreBudget tyre_budget(const TyreContactTrace& trace, const TyreGrid& grid, const KroppPlate& plate,
+// averaged with belt_budget_weights. texture: the road under the window, gathered step by step. contact_stiffness: k_c of the single-point estimate.
+TyreBudget tyre_budget(const TyreContactTrace& trace, const TextureUnderContact& texture, const KroppPlate& plate,
                        const PointAveragedPsd& belt_psd, double speed, double sample_rate,
                        std::vector<FractionalOctaveBand> bands, double contact_stiffness);
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/run_estimate.hpp"
+#include "simulation/tyre_step_outputs.hpp"
 
 namespace rollnoise {
 
@@ -13,11 +14,21 @@ namespace rollnoise {
 // fields in memory (road, displacement, force, gap), three in contact.csv.
 RunEstimate estimate_point_run(std::uint64_t samples, std::uint64_t points, const std::string& source);
 
-// A tyre model: `samples` steps over a contact window of `window_points` points, the belt surface
-// of `lateral` × `circumferential` points (contact.h5), the tread velocity on the radiation mesh
-// and `receivers` WAV files of `audio_frames` frames.
-RunEstimate estimate_tyre_run(std::uint64_t samples, std::uint64_t window_points, std::uint64_t lateral,
-                              std::uint64_t circumferential, std::uint64_t receivers, std::uint64_t audio_frames,
-                              const std::string& source);
+// A tyre model. The contact loop streams its fields (tyre_step_outputs.hpp): memory holds the
+// per-step totals, the road under the window by column, and the tread velocity on the radiation
+// mesh; contact.h5 holds what [output] fields asks for, counted uncompressed (deflate only helps).
+struct TyreRunSize {
+  std::uint64_t samples = 0;          // steps
+  std::uint64_t window_points = 0;    // the contact window, Nw·Ny
+  std::uint64_t window_columns = 0;   // Nw
+  std::uint64_t lateral = 0;          // the belt, Ny × Nθ
+  std::uint64_t circumferential = 0;
+  bool radiating = false;             // whether the tread velocity is kept for the radiation
+  std::uint64_t receivers = 0;        // WAV files
+  std::uint64_t audio_frames = 0;     // of each
+  ContactFields fields = ContactFields::contact;
+  SurfaceBlock block;                 // the belt velocity's decimation for ContactFields::contact
+};
+RunEstimate estimate_tyre_run(const TyreRunSize& size, const std::string& source);
 
 }  // namespace rollnoise

@@ -7,6 +7,7 @@
 
 #include "acoustics/sound_levels.hpp"
 #include "core/csv.hpp"
+#include "core/output_directory.hpp"
 #include "core/error.hpp"
 #include "core/gnuplot.hpp"
 
@@ -64,8 +65,7 @@ nlohmann::json write_sound_report(const fs::path& dir, const std::vector<Receive
                       {"sample_rate_hz", r.sample_rate},
                       {"duration_s", duration}};
   }
-  csv_file.close();
-  if (!csv_file) throw std::runtime_error("cannot write spectrum.csv");
+  close_output_file(csv_file, dir / "spectrum.csv");
   if (plot) plot_spectra(dir, signals);
   return levels;
 }

@@ -37,6 +37,7 @@
 #include "simulation/greens_plots.hpp"
 #include "simulation/run_size.hpp"
 #include "simulation/tyre_sound.hpp"
+#include "simulation/tyre_step_outputs.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -61,118 +62,58 @@ void write_totals_csv(const fs::path& path, const TyreContactTrace& t) {
     const double row[] = {t.time(n), t.total_force(n), t.contact_area(n), t.contact_length(n)};
     csv.row(row, 4);
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  close_output_file(out, path);
 }
 
-// The pressure over the window at one step: x, y, pressure (Pa), for a gnuplot image.
-void write_pressure_snapshot(const fs::path& path, const TyreContactTrace& t, const TyreGrid& grid, Eigen::Index step) {
+// The pressure over the window at one step (its forces): x, y, pressure (Pa), for a gnuplot image.
+void write_pressure_snapshot(const fs::path& path, const Eigen::VectorXd& force, const TyreGrid& grid) {
   std::ofstream out(path, std::ios::binary);
   CsvWriter csv(out, {"x", "y", "pressure"});
   const double area = grid.dx() * grid.dy();
   for (int j = 0; j < grid.lateral; ++j) {
     for (int i = 0; i < grid.window; ++i) {
-      const double row[] = {grid.x(i), grid.y(j), t.force(step, i + static_cast<Eigen::Index>(grid.window) * j) / area};
+      const double row[] = {grid.x(i), grid.y(j), force(i + static_cast<Eigen::Index>(grid.window) * j) / area};
       csv.row(row, 3);
     }
     out << '\n';  // blank line between scan lines, as gnuplot's image style expects
   }
+  close_output_file(out, path);
 }
 
-// contact.h5: the contact fields over the window and the belt's surface response, with units
-// and the grid as attributes. Returns the radial displacement of one material point (mid-width)
-// over one revolution, starting at the top of the tyre (empty if the run is shorter).
-// When `tread_velocity` is given, it receives the belt's velocity sampled onto the radiation
-// mesh's tread points by `sampling` (belt_sampling.hpp), one row per step.
-// When `belt_psd` is given, every step's belt velocity (index j + Ny·g) is pushed into it.
-std::vector<double> write_fields(const fs::path& path, const TyreContactTrace& t, const RollingModes& modes,
-                                 double speed, double load, const Eigen::SparseMatrix<double>* sampling,
-                                 Eigen::MatrixXd* tread_velocity, PointAveragedPsd* belt_psd) {
-  const TyreGrid& grid = modes.grid();
-  Hdf5Writer h5(path);
-  h5.attribute("/", "software", std::string("rollnoise ") + ROLLNOISE_VERSION);
-  h5.attribute("/", "speed_m_per_s", speed);
-  h5.attribute("/", "static_load_N", load);
-  h5.attribute("/", "time_step_s", modes.time_step());
-  h5.attribute("/", "substeps_per_cell", modes.substeps());
-  h5.attribute("/", "radius_m", grid.radius);
-  h5.attribute("/", "belt_width_m", grid.width);
-  h5.write("/time", t.time, "s", "time of each sample; t = 0 is the start of the run in steady rolling");
-  std::vector<double> x(static_cast<std::size_t>(grid.window)), y(static_cast<std::size_t>(grid.lateral));
-  for (int i = 0; i < grid.window; ++i) x[static_cast<std::size_t>(i)] = grid.x(i);
-  for (int j = 0; j < grid.lateral; ++j) y[static_cast<std::size_t>(j)] = grid.y(j);
-  const std::string layout =
-      "[sample][p] with p = i + Nw*j: reshape to [sample][Ny][Nw] (C order); x[i] along the direction of "
-      "travel from the axle, y[j] across the belt";
-  h5.write("/contact/force", t.force, "N", "contact force on each window point; " + layout);
-  h5.write("/contact/displacement", t.displacement, "m",
-           "vertical position of the tread surface, in the road's datum; " + layout);
-  h5.write("/contact/road", t.road, "m", "road height under each window point; " + layout);
-  for (const char* name : {"/contact/force", "/contact/displacement", "/contact/road"}) {
-    h5.attribute(name, "x_m", x);
-    h5.attribute(name, "y_m", y);
+// The radiating body (issue 10 §2): the loaded tyre, flattened over the run's mean contact patch
+// (centred under the axle) with the axle lowered by the indentation; beyond the patch the belt's
+// own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders beyond the
+// patch's width are lifted by the crown's drop there, at least the clearance. The patch is
+// measured over the run's first steps (all of a run of up to 4096: tyre_step_outputs.hpp), so
+// that the belt can be sampled onto the mesh as the run goes on.
+// Not the steady rolling patch on a smooth road, which would be the same on every road and let
+// cases on other surfaces share the radiation cache's entries (issue 12): on the rough library
+// surfaces it is 7-12 mm shorter than the run's own mean patch (0.1075 m against 0.1193 m on
+// DAC 11, 0.1149 m on SMA 11 at 80 km/h), which puts the horn's throat inside the tread the run
+// holds against the texture and moved the levels by 1.0-1.9 dB (docs/radiation_cache.md). The
+// mean patch is where this run's tread leaves the road.
+void deform_radiating_body(TyreSoundSettings& sound, const RadiatingPatch& patch, const TyreGrid& grid,
+                           const RollingTyreModel& model, const CaseFile& file) {
+  if (sound.radiation.mesh.geometry != TyreGeometry::deformed) return;
+  TyreDeformation& shape = sound.radiation.mesh.deformation;
+  shape.patch_length = patch.length;
+  shape.patch_width = std::min(patch.width, grid.width);
+  shape.indentation = patch.indentation;
+  shape.belt_tension = model.belt_tension;
+  shape.belt_bending = model.belt_bending;
+  shape.foundation_stiffness = model.foundation_stiffness;
+  const double crown_drop =
+      model.crown_radius > 0.0
+          ? (0.25 * grid.width * grid.width - 0.25 * shape.patch_width * shape.patch_width) / (2.0 * model.crown_radius)
+          : 0.0;
+  shape.shoulder_lift = std::max(crown_drop, sound.radiation.mesh.clearance);
+  if (!(shape.patch_length > 0.0 && shape.indentation > 0.0)) {
+    std::fprintf(stderr, "rollnoise: warning: no contact patch: the tyre radiates undeformed\n");
+    sound.radiation.mesh.geometry = TyreGeometry::undeformed;
+  } else if (const std::string inside = receivers_outside_tyre(sound); !inside.empty()) {
+    const ConfigTable radiation_table = file.optional_section("radiation");
+    throw InputError(radiation_table.source_of("receivers"), "[radiation] receivers", inside);
   }
-
-  // The belt surface: Nθ positions around (fixed in space, from the bottom in the direction of
-  // travel) by Ny across the whole belt.
-  const int around = grid.circumferential;
-  const int across = grid.lateral;
-  const auto samples = static_cast<std::size_t>(t.time.size());
-  auto displacement = h5.slices("/surface/displacement", samples, static_cast<std::size_t>(across),
-                                static_cast<std::size_t>(around), "m",
-                                "radial displacement of the belt (outward positive towards the road at the bottom) "
-                                "[sample][y][position around]");
-  auto velocity = h5.slices("/surface/velocity", samples, static_cast<std::size_t>(across),
-                            static_cast<std::size_t>(around), "m/s",
-                            "radial velocity of the belt surface at each fixed position, du/dt there (what radiates; not the velocity of the material passing it) [sample][y][position around]");
-  SurfaceResponse response(modes, t.steady_force, across);
-  std::vector<double> angle(static_cast<std::size_t>(around)), lateral(static_cast<std::size_t>(across));
-  for (int g = 0; g < around; ++g) angle[static_cast<std::size_t>(g)] = g * grid.dx();
-  for (int j = 0; j < across; ++j) lateral[static_cast<std::size_t>(j)] = response.lateral_position(j);
-  for (const char* name : {"/surface/displacement", "/surface/velocity"}) {
-    h5.attribute(name, "arc_position_m", angle);
-    h5.attribute(name, "y_m", lateral);
-  }
-  Eigen::MatrixXd u(across, around), v(across, around);
-  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> slice(across, around);
-  std::vector<double> revolution;
-  // The belt cell under each contact point (index j + Ny·g of the belt field): the tread there
-  // is held against the road and does not radiate (below).
-  std::vector<Eigen::Index> cell_under(static_cast<std::size_t>(grid.points()));
-  for (int j = 0; j < grid.lateral; ++j) {
-    const int row = std::clamp(static_cast<int>(grid.y(j) / (grid.width / across)), 0, across - 1);
-    for (int i = 0; i < grid.window; ++i)
-      cell_under[static_cast<std::size_t>(i + grid.window * j)] = row + static_cast<Eigen::Index>(across) * grid.grid_index(i);
-  }
-  Eigen::VectorXd radiating(static_cast<Eigen::Index>(across) * around);
-  if (tread_velocity) tread_velocity->resize(static_cast<Eigen::Index>(samples), sampling->rows());
-  for (std::size_t n = 0; n < samples; ++n) {
-    response.step(t.force.row(static_cast<Eigen::Index>(n)).transpose(), u, v);
-    if (belt_psd) belt_psd->push(std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
-    if (tread_velocity) {
-      // The radiating velocity leaves out the cells in contact: the road holds the tread there,
-      // and what the tread displaces escapes only through the texture's channels (air pumping,
-      // not modelled). Left in, the contact patch would pump into the mesh's 2 mm clearance (the
-      // flat of the deformed tyre, or the undeformed cylinder's lowest line) and be amplified by
-      // the very horn the mesh resolves.
-      radiating = v.reshaped();
-      for (std::size_t p = 0; p < cell_under.size(); ++p)
-        if (t.force(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p)) > 0.0) radiating(cell_under[p]) = 0.0;
-      tread_velocity->row(static_cast<Eigen::Index>(n)) = (*sampling * radiating).transpose();
-    }
-    slice = u.cast<float>();
-    displacement->append(slice.data());
-    slice = v.cast<float>();
-    velocity->append(slice.data());
-    // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
-    const auto substeps = static_cast<std::size_t>(modes.substeps());
-    if (n % substeps == 0 && n / substeps < static_cast<std::size_t>(around)) {
-      const int g = ((around / 2 - static_cast<int>(n / substeps)) % around + around) % around;
-      revolution.push_back(u(across / 2, g));
-    }
-  }
-  if (revolution.size() < static_cast<std::size_t>(around)) revolution.clear();
-  return revolution;
 }
 
 // The paper's Fig. 5b: the radial displacement of one material point over one revolution.
@@ -185,6 +126,7 @@ void write_revolution(const fs::path& dir, const std::vector<double>& revolution
                           revolution[k]};
     csv.row(row, 3);
   }
+  close_output_file(out, dir / "revolution.csv");
   std::ostringstream gp;
   gp << "# Radial displacement of a belt point over one revolution (cf. Larsson 2000, Fig. 5b).\n"
      << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
@@ -247,6 +189,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   const RollingTyreModel model = read_rolling_tyre_model(tyre, options.cache);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
+  // What contact.h5 holds (tyre_step_outputs.hpp).
+  const ContactFields fields = *contact_fields_from(output.choice("fields", {"contact", "all", "none"}, "contact"));
   output.text("directory", "");
   // The radiated band reaches the upper edge of the band_top band (5623 Hz for 5 kHz) unless
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
@@ -289,12 +233,17 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // step after `duration`: the road must reach the last step's position.
   if (!(settings.duration / dt < 1e15)) rolling.fail("duration", "gives more than 1e15 time steps; shorten it");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
-  check_run_fits(estimate_tyre_run(steps + 1, static_cast<std::uint64_t>(grid.points()), static_cast<std::uint64_t>(grid.lateral),
-                                   static_cast<std::uint64_t>(grid.circumferential),
-                                   sound.enabled && sound.wav ? sound.receivers.size() : 0,
-                                   static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate),
-                                   file.name()),
-                 available_memory_bytes(), available_disk_bytes(out), options.force);
+  TyreRunSize size;
+  size.samples = steps + 1;
+  size.window_points = static_cast<std::uint64_t>(grid.points());
+  size.window_columns = static_cast<std::uint64_t>(grid.window);
+  size.lateral = static_cast<std::uint64_t>(grid.lateral);
+  size.circumferential = static_cast<std::uint64_t>(grid.circumferential);
+  size.radiating = sound.enabled;
+  size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;
+  size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
+  size.fields = fields;
+  check_run_fits(estimate_tyre_run(size, file.name()), available_memory_bytes(), available_disk_bytes(out), options.force);
   const double travel = settings.speed * dt * static_cast<double>(steps);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
@@ -304,9 +253,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   StagedOutputDirectory staged(out);
   std::optional<ProgressReporter> progress;
   if (options.progress) progress.emplace("simulate " + fs::path(file.path()).filename().string(), steps + 1);
-  const TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
-                            settings.road_sampling};
-  const auto contact_started = std::chrono::steady_clock::now();
+  TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
+                      settings.road_sampling};
+  run.keep_fields = false;  // streamed through the step outputs below
   std::unique_ptr<NonlinearTread> springs;
   if (model.tread && model.tread->type == TreadSettings::Type::nonlinear) {
     // spring_stiffness is per area: each point carries its cell's share.
@@ -314,68 +263,45 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
         Eigen::VectorXd::Constant(grid.points(), model.tread->spring_stiffness * grid.dx() * grid.dy()),
         model.tread->spring_exponent});
   }
-  const TyreContactTrace trace = simulate_rolling_tyre(*rolling_modes, local, *road, run, progress ? &*progress : nullptr, springs.get());
-  const double contact_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count();
-  for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
-
-  write_totals_csv(staged.staging() / "contact.csv", trace);
-  // The snapshot at the largest total force: the most telling instant on a rough road.
-  Eigen::Index snapshot = 0;
-  trace.total_force.maxCoeff(&snapshot);
-  write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", trace, grid, snapshot);
-  // The radiating body (issue 10 §2): the loaded tyre, flattened over the run's mean contact
-  // patch (centred under the axle) with the axle lowered by the indentation; beyond the patch the
-  // belt's own deflected shape along the circumference (tyre_surface_mesh.hpp). The shoulders
-  // beyond the patch's width are lifted by the crown's drop there, at least the clearance.
-  // Not the steady rolling patch on a smooth road, which would be the same on every road and
-  // let cases on other surfaces share the radiation cache's entries (issue 12): on the rough
-  // library surfaces it is 7-12 mm shorter than the run's own mean patch (0.1075 m against
-  // 0.1193 m on DAC 11, 0.1149 m on SMA 11 at 80 km/h), which puts the horn's throat inside the
-  // tread the run holds against the texture and moved the levels by 1.0-1.9 dB
-  // (docs/radiation_cache.md). The mean patch is where this run's tread leaves the road.
-  if (sound.enabled && sound.radiation.mesh.geometry == TyreGeometry::deformed) {
-    TyreDeformation& shape = sound.radiation.mesh.deformation;
-    shape.patch_length = trace.contact_length.mean();
-    shape.patch_width = std::min(trace.contact_width.mean(), grid.width);
-    shape.indentation = trace.indentation;
-    shape.belt_tension = model.belt_tension;
-    shape.belt_bending = model.belt_bending;
-    shape.foundation_stiffness = model.foundation_stiffness;
-    const double crown_drop = model.crown_radius > 0.0 ? (0.25 * grid.width * grid.width - 0.25 * shape.patch_width * shape.patch_width) /
-                                                             (2.0 * model.crown_radius)
-                                                       : 0.0;
-    shape.shoulder_lift = std::max(crown_drop, sound.radiation.mesh.clearance);
-    if (!(shape.patch_length > 0.0 && shape.indentation > 0.0)) {
-      std::fprintf(stderr, "rollnoise: warning: no contact patch: the tyre radiates undeformed\n");
-      sound.radiation.mesh.geometry = TyreGeometry::undeformed;
-    } else if (const std::string inside = receivers_outside_tyre(sound); !inside.empty()) {
-      const ConfigTable radiation_table = file.optional_section("radiation");
-      throw InputError(radiation_table.source_of("receivers"), "[radiation] receivers", inside);
-    }
-  }
-  // The belt onto the radiation's input mesh: the finest of its bands' meshes (tyre_radiation.hpp).
-  sound.radiation.sample_rate_hz = 1.0 / dt;
-  sound.cache_folder = options.cache;
-  const Eigen::SparseMatrix<double> sampling = belt_to_tread_matrix(
-      grid.circumferential, grid.lateral,
-      make_tyre_surface_mesh(sound.enabled ? radiation_mesh_levels(sound.radiation).back().spec : sound.radiation.mesh));
-  Eigen::MatrixXd tread_velocity;
+  // What each step leaves behind, taken as the contact loop runs (tyre_step_outputs.hpp).
+  const auto samples = steps + 1;
   // The energy budget (issue 10 §1) of a run with radiation: the belt's velocity spectra, over
   // the whole belt and near the contact, gathered while the response stage runs.
   std::unique_ptr<PointAveragedPsd> belt_psd;
-  const auto samples = static_cast<std::size_t>(trace.time.size());
   if (sound.enabled && samples >= 8) {
     belt_psd = std::make_unique<PointAveragedPsd>(
         static_cast<std::size_t>(grid.circumferential) * static_cast<std::size_t>(grid.lateral), 1.0 / dt,
         welch_segment_for(samples, budget_max_segment),
         belt_budget_weights(grid.circumferential, grid.lateral, grid.circumference()));
   }
-  const std::vector<double> revolution =
-      write_fields(staged.staging() / "contact.h5", trace, *rolling_modes, settings.speed, settings.static_load,
-                   &sampling, sound.enabled ? &tread_velocity : nullptr, belt_psd.get());
+  sound.radiation.sample_rate_hz = 1.0 / dt;
+  sound.cache_folder = options.cache;
+  TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
+                                      settings.static_load, {}, {}, belt_psd.get()};
+  if (sound.enabled) {
+    // The belt onto the radiation's input mesh (the finest of its bands' meshes,
+    // tyre_radiation.hpp), the tyre deformed as it rolls (deform_radiating_body).
+    step_outputs.tread_sampling = [&](const RadiatingPatch& patch) {
+      deform_radiating_body(sound, patch, grid, model, file);
+      return belt_to_tread_matrix(grid.circumferential, grid.lateral,
+                                  make_tyre_surface_mesh(radiation_mesh_levels(sound.radiation).back().spec));
+    };
+  }
+  TyreStepOutputs outputs(*rolling_modes, std::move(step_outputs));
+  const auto contact_started = std::chrono::steady_clock::now();
+  const TyreContactTrace trace =
+      simulate_rolling_tyre(*rolling_modes, local, *road, run, progress ? &*progress : nullptr, springs.get(), &outputs);
+  const double contact_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count() - trace.sink_seconds;
+  outputs.finish();
+  for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
+
+  write_totals_csv(staged.staging() / "contact.csv", trace);
+  // The snapshot at the largest total force: the most telling instant on a rough road.
+  write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", outputs.snapshot_force(), grid);
+  const std::vector<double> revolution = outputs.revolution();
   if (plots) {
-    plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", trace.time(snapshot));
+    plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", outputs.snapshot_time());
     write_greens_circumference(staged.staging(), *make_centre_line_response(tyre, options.cache), grid.circumferential);
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
@@ -402,6 +328,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                            {"fits_from_cache", model.fits_from_cache}};
   }
   summary["road"] = road->type();
+  summary["contact_h5_fields"] = to_string(fields);
   summary["mean_total_force_N"] = trace.total_force.mean();
   summary["max_total_force_N"] = trace.total_force.maxCoeff();
   summary["min_total_force_N"] = trace.total_force.minCoeff();
@@ -457,12 +384,12 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
           model.tread->type == TreadSettings::Type::winkler     ? model.tread->stiffness_per_area * area
           : model.tread->type == TreadSettings::Type::nonlinear ? model.tread->spring_stiffness * area
                                                                : std::numeric_limits<double>::infinity();
-      budget = std::make_unique<TyreBudget>(tyre_budget(trace, grid, plate, *belt_psd, settings.speed, 1.0 / dt,
+      budget = std::make_unique<TyreBudget>(tyre_budget(trace, outputs.texture(), plate, *belt_psd, settings.speed, 1.0 / dt,
                                                         budget_bands(1.0 / dt, sound.radiation.max_frequency_hz),
                                                         contact_stiffness));
     }
     budget_written = budget != nullptr;
-    const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, tread_velocity, 1.0 / dt, settings.speed,
+    const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed,
                                                   fs::path(file.path()).filename().string(), plots, budget.get(),
                                                   options.progress);
     for (const auto& [key, value] : heard.items()) summary[key] = value;
@@ -473,13 +400,15 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   summary["step_loop_time_s"] = trace.step_loop_seconds;
   summary["history_engine_time_s"] = trace.history_seconds;
   summary["lcp_time_s"] = trace.lcp_seconds;
+  // The response stage and the streamed outputs, run step by step beside the contact loop.
+  summary["response_and_outputs_time_s"] = trace.sink_seconds;
   if (trace.lcp_factorisations >= 0) summary["lcp_factorisations"] = trace.lcp_factorisations;
   summary["lcp_cg_iterations"] = trace.lcp_cg_iterations;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   if (!options.case_text.empty()) write_text_file(staged.staging() / "case.toml", options.case_text);
   staged.commit();
-  std::string written = "contact.csv, contact.h5, summary.json";
+  std::string written = fields == ContactFields::none ? "contact.csv, summary.json" : "contact.csv, contact.h5, summary.json";
   if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
   if (budget_written) written += ", budget.csv";  // the plate's estimates only
   if (sound.enabled && sound.wav) written += ", WAV files";

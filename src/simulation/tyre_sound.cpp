@@ -16,6 +16,7 @@
 #include "audio/wav_file.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
+#include "core/output_directory.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
 #include "simulation/energy_budget_output.hpp"
@@ -46,8 +47,7 @@ nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound
     const double row[] = {band.nominal, lw, lw + a};
     csv.row(row, 3);
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write sound_power.csv");
+  close_output_file(out, dir / "sound_power.csv");
   if (plots) {
     std::ostringstream gp;
     gp << "# Drawn by rollnoise from sound_power.csv; run `gnuplot sound_power.gp` to redraw.\n"

@@ -124,6 +124,23 @@ TEST(DiskFull, AWriteThatFailsGivesOneMessageRemovesThePartialOutputAndExits1) {
   EXPECT_EQ(ok.status, 0) << describe(ok);
 }
 
+// The same for a tyre run, whose contact.h5 is written by HDF5 as the run goes: the failed write
+// is named with the system's reason, and the process exits with 1 (libhdf5's exit handler
+// crashed on the file it could not close, until it was switched off: hdf5_writer.cpp).
+TEST(DiskFull, ATyreRunWhoseContactH5CannotBeWrittenExits1) {
+  Workspace ws;
+  write_earlier_output(ws);
+  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=0.005", "--set",
+                              "output.plots=false", "--force"},
+                             "ulimit -f 32; ");
+  EXPECT_EQ(r.status, 1) << describe(r);
+  EXPECT_TRUE(contains(r.err, "contact.h5")) << r.err;
+  EXPECT_TRUE(contains(r.err, "File too large")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+}
+
 // A tyre run of a million seconds: about 5e10 steps over a 20 × 40 contact window, far beyond
 // any machine's memory and disk. Refused at once, naming the keys; --force would run it.
 TEST(OversizedCase, ATyreRunThatCannotFitIsRefusedInWellUnderASecond) {
@@ -161,9 +178,11 @@ TEST(OversizedCase, APointRunLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) 
 }
 
 TEST(OversizedCase, SizesWhoseProductOverflowsAreExitStatus2) {
-  // 9.1e14 steps × 20 lateral × 1016 around overflows 64 bits.
+  // 9.1e14 steps × (3 × 2040 window + 2 × 20 × 1016 belt values) × 4 bytes of contact.h5 with
+  // [output] fields = "all" overflows 64 bits.
   Workspace ws;
-  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=8e10"});
+  const RunResult r = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=8e10", "--set",
+                              "output.fields=\"all\""});
   EXPECT_EQ(r.status, 2) << describe(r);
   EXPECT_TRUE(contains(r.err, "overflows 64 bits")) << r.err;
   EXPECT_EQ(count_lines(r.err), 1u) << r.err;

@@ -25,6 +25,7 @@
 
 #include "audio/wav_file.hpp"
 #include "cli/cli_workspace.hpp"
+#include "core/hdf5_reader.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -224,6 +225,87 @@ TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
   EXPECT_TRUE(ws.leftovers().empty());
 }
 
+// [output] fields (issue 13): what contact.h5 holds. Checked against the run's own other outputs
+// and against each other: the default file's force sums to contact.csv's total force at every
+// step; the road strip holds exactly what "all" writes over the window (road[n][j][i] =
+// strip[j][i·p + n]); the default belt velocity is the block mean of the full field "all" writes.
+TEST(SimulateCli, ContactFieldsChooseWhatContactH5Holds) {
+  Workspace ws;
+  const std::string model = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16.toml").string();
+  const auto write_case = [&](const std::string& name, std::optional<std::string> fields) {
+    ws.write(name, edit_case(project_case("plate_rough_80kmh.toml"),
+                             {{"tyre", "file", "\"" + model + "\""}, rough_surface(), {"rolling", "duration", "0.004"},
+                              {"radiation", "enabled", "false"}, {"output", "plots", "false"}, {"output", "fields", fields}}));
+  };
+  write_case("default.toml", std::nullopt);
+  write_case("all.toml", "\"all\"");
+  write_case("none.toml", "\"none\"");
+  write_case("bogus.toml", "\"everything\"");
+  for (const char* name : {"default", "all", "none"}) {
+    const RunResult r = ws.run({"simulate", std::string(name) + ".toml", "--out", name});
+    ASSERT_EQ(r.status, 0) << describe(r);
+  }
+  const RunResult bad = ws.run({"simulate", "bogus.toml", "--out", "bogus"});
+  EXPECT_EQ(bad.status, 2) << describe(bad);
+  EXPECT_NE(bad.err.find("[output] fields"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("\"none\""), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(ws.path("none") / "contact.h5"));
+  EXPECT_EQ(read_json(ws.path("none") / "summary.json")["contact_h5_fields"], "none");
+
+  const rollnoise::Hdf5Reader standard(ws.path("default") / "contact.h5"), all(ws.path("all") / "contact.h5");
+  const nlohmann::json summary = read_json(ws.path("default") / "summary.json");
+  const auto steps = static_cast<std::size_t>(summary["settings"]["steps"].get<long>()) + 1;
+  const auto lateral = static_cast<std::size_t>(summary["grid"]["points_lateral"].get<int>());
+  const auto window = static_cast<std::size_t>(summary["grid"]["contact_window_points"].get<int>());
+  const auto around = static_cast<std::size_t>(summary["grid"]["points_circumferential"].get<int>());
+  const auto p = static_cast<std::size_t>(summary["settings"]["substeps"].get<int>());
+  EXPECT_FALSE(standard.exists("/contact/displacement"));
+  EXPECT_FALSE(standard.exists("/contact/road"));
+  EXPECT_TRUE(all.exists("/contact/displacement"));
+  EXPECT_TRUE(all.exists("/surface/displacement"));
+
+  // Force against contact.csv's totals (float32 against double: 1e-5 relative).
+  const rollnoise::Hdf5Array force = standard.read_numbers("/contact/force", 3, 1u << 26);
+  ASSERT_EQ(force.dims, (std::vector<std::size_t>{steps, lateral, window}));
+  std::ifstream csv(ws.path("default") / "contact.csv");
+  std::string line;
+  std::getline(csv, line);
+  for (std::size_t n = 0; n < steps; ++n) {
+    ASSERT_TRUE(std::getline(csv, line));
+    const double total = std::stod(line.substr(line.find(',') + 1));
+    double sum = 0.0;
+    for (std::size_t k = 0; k < lateral * window; ++k) sum += force.values[n * lateral * window + k];
+    EXPECT_NEAR(sum, total, 1e-5 * total) << "step " << n;
+  }
+  // The road strip against the road over the window.
+  const rollnoise::Hdf5Array strip = standard.read_numbers("/contact/road_strip", 2, 1u << 26);
+  const std::size_t length = (window - 1) * p + steps;
+  ASSERT_EQ(strip.dims, (std::vector<std::size_t>{lateral, length}));
+  const rollnoise::Hdf5Array road = all.read_numbers("/contact/road", 3, 1u << 26);
+  ASSERT_EQ(road.dims, (std::vector<std::size_t>{steps, lateral, window}));
+  for (std::size_t n = 0; n < steps; ++n)
+    for (std::size_t j = 0; j < lateral; ++j)
+      for (std::size_t i = 0; i < window; ++i)
+        ASSERT_EQ(road.values[(n * lateral + j) * window + i], strip.values[j * length + i * p + n]) << n << ' ' << j << ' ' << i;
+  // The belt velocity: block means of 8 cells around over the whole width.
+  const rollnoise::Hdf5Array blocks = standard.read_numbers("/surface/velocity", 3, 1u << 26);
+  const rollnoise::Hdf5Array full = all.read_numbers("/surface/velocity", 3, 1u << 28);
+  const std::size_t columns = (around + 7) / 8;
+  ASSERT_EQ(blocks.dims, (std::vector<std::size_t>{steps, 1, columns}));
+  ASSERT_EQ(full.dims, (std::vector<std::size_t>{steps, lateral, around}));
+  double largest = 0.0;
+  for (double v : full.values) largest = std::max(largest, std::abs(v));
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t n = 0; n < steps; ++n)
+    for (std::size_t b = 0; b < columns; ++b) {
+      double sum = 0.0;
+      std::size_t cells = 0;
+      for (std::size_t g = 8 * b; g < std::min(around, 8 * b + 8); ++g)
+        for (std::size_t j = 0; j < lateral; ++j, ++cells) sum += full.values[(n * lateral + j) * around + g];
+      EXPECT_NEAR(blocks.values[n * columns + b], sum / static_cast<double>(cells), 1e-6 * largest) << n << ' ' << b;
+    }
+}
+
 // The sound of a tyre run: spectra, levels, sound power and calibrated WAV files, on a coarse
 // radiation mesh to keep the test short. The WAV files analysed by `rollnoise analyse` give
 // back the levels `simulate` reported: the two verbs process sound the same way, and the WAV
@@ -258,8 +340,9 @@ TEST(SimulateCli, PlateTyreWritesSoundThatAnalyseReadsBack) {
   EXPECT_GT(summary["full_scale_pa"].get<double>(), 0.0);
   EXPECT_GE(summary["wav_duration_s"].get<double>(), 5.0);
   EXPECT_TRUE(summary["sound_power"]["LwA_dB"].is_number());
-  // The radiating body is the loaded tyre (issue 10 §2): flat over the run's mean contact patch,
-  // to the mesh's cell size (the patch's edges are cell edges: equal to rounding).
+  // The radiating body is the loaded tyre (issue 10 §2): flat over the run's mean contact patch
+  // (a run of up to 4096 steps is measured whole), to the mesh's cell size (the patch's edges are
+  // cell edges: equal to rounding).
   EXPECT_EQ(summary["radiation"]["geometry"], "deformed");
   EXPECT_NEAR(summary["radiation"]["flat_length_m"].get<double>(), summary["patch_length_m"].get<double>(), 1e-9);
   EXPECT_NEAR(summary["radiation"]["flat_width_m"].get<double>(), summary["patch_width_m"].get<double>(), 1e-9);

@@ -1,5 +1,6 @@
 #include "road_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -63,13 +64,23 @@ RoadUnderTest generate(const RoadOptions& options) {
   const fs::path path(options.input);
   const toml::table raw = parse_toml_file(path);
   const bool is_case = raw.contains("road") && raw["road"].is_table();
+  std::vector<std::string> overrides = options.overrides;
+  // An aggregate road is generated as one map of its `length` (5 m by default) and, beyond,
+  // in tiles as a tyre reaches them (aggregate_road.hpp). The analysis takes one map of the
+  // whole length analysed, as it always has, unless the file gives its length.
+  const toml::table& road_node = is_case ? *raw["road"].as_table() : raw;
+  const bool given = road_node.contains("length") || std::any_of(overrides.begin(), overrides.end(), [](const std::string& o) {
+                       return o.rfind("road.length=", 0) == 0 || o.rfind("length=", 0) == 0;
+                     });
+  if (road_node["type"].value_or(std::string()) == "aggregate" && !given && options.length > 5.0)
+    overrides.push_back("road.length=" + format_number(options.length));
   std::optional<CaseFile> file;
   if (is_case) {
-    file.emplace(CaseFile::load(path, options.overrides));
+    file.emplace(CaseFile::load(path, overrides));
   } else {
     // A surface file: the keys of a [road] table at the top level. --set road.key=... applies.
     std::vector<std::string> top_level;
-    for (const std::string& o : options.overrides) top_level.push_back(o.rfind("road.", 0) == 0 ? o.substr(5) : o);
+    for (const std::string& o : overrides) top_level.push_back(o.rfind("road.", 0) == 0 ? o.substr(5) : o);
     file.emplace(CaseFile::load_model(path, top_level));
   }
   const ConfigTable road = is_case ? file->section("road") : file->top();
