@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cancellation.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -118,7 +119,11 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
   const double thickness = spec.shape_factor * k.dmax;  // T
   const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
   const double origin = h * static_cast<double>(first);
+  // Up to 2^25 stones take tens of seconds: Ctrl-C is polled every 4096 (core/cancellation.hpp).
+  const CancellationToken cancel;
+  std::size_t raised = 0;
   for (const Stone& s : stones) {
+    if ((++raised & 4095u) == 0) cancel.throw_if_cancelled();
     const double x = s.x - origin, y = s.y, a = s.a, b = s.b, c = s.c, cs = s.cs, sn = s.sn;
     // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); positive:
     // resting on z = 0; negative: cut at the top plane z = T.

@@ -103,9 +103,13 @@ void write_table(const fs::path& path, const std::vector<double>& f, const std::
                  const Eigen::MatrixXcd& values) {
   std::ofstream out(path, std::ios::binary);
   CsvWriter csv(out, {"frequency_hz", "distance_m", "re", "im"});
+  // Up to 1e9 rows, with the staging folder there: polled row by row, so that Ctrl-C removes
+  // it (the watchdog would leave it behind).
+  const CancellationToken cancel;
   // Distance by distance, so that each response point is one block of rows (and one line).
   for (std::size_t j = 0; j < d.size(); ++j)
     for (std::size_t i = 0; i < f.size(); ++i) {
+      cancel.throw_if_cancelled();
       const std::complex<double> v = values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
       const double row[] = {f[i], d[j], v.real(), v.imag()};
       csv.row(row, 4);

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include "core/cancellation.hpp"
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
@@ -126,7 +127,11 @@ void write_road_csv(const fs::path& path, const LoadedProfile& p) {
   }
   CsvWriter csv(out, header);
   std::vector<double> row(header.size());
+  // Seconds for a long road of many lines, with the staging folder there: polled row by row,
+  // so that Ctrl-C removes it (the watchdog would leave it behind).
+  const CancellationToken cancel;
   for (std::size_t i = 0; i < p.x.size(); ++i) {
+    cancel.throw_if_cancelled();
     row[0] = p.x[i];
     for (std::size_t j = 0; j < p.z_lines.size(); ++j) row[j + 1] = p.z_lines[j][i];
     csv.row(row.data(), row.size());
