@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "background_run.hpp"
 #include "cli_workspace.hpp"
 
 namespace {
@@ -36,28 +37,6 @@ void expect_earlier_output(const Workspace& ws) {
   EXPECT_EQ(names, (std::set<std::string>{"contact.csv", "summary.json"}));
 }
 
-// Starts `rollnoise args...` in work(); stdout and stderr go to files beside work().
-pid_t start(const Workspace& ws, const std::vector<std::string>& args) {
-  const fs::path out = ws.work().parent_path() / "stdout.txt";
-  const fs::path err = ws.work().parent_path() / "stderr.txt";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(ws.work().c_str()) != 0) ::_exit(127);
-    if (!std::freopen("/dev/null", "r", stdin) || !std::freopen(out.c_str(), "w", stdout) ||
-        !std::freopen(err.c_str(), "w", stderr))
-      ::_exit(127);
-    std::vector<char*> argv;
-    std::string binary = ROLLNOISE_BINARY;
-    argv.push_back(binary.data());
-    std::vector<std::string> copies(args);
-    for (std::string& a : copies) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(binary.c_str(), argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
 // The staging folder of a run writing work()/result: ".result.partial-PID".
 fs::path staging_of(const Workspace& ws, pid_t pid) {
   return ws.work() / (".result.partial-" + std::to_string(pid));
@@ -71,7 +50,7 @@ void stop_running_simulate(int signal_number) {
   write_earlier_output(ws);
   // About a minute of time steps for the direct history engine: the run is still going when
   // the signal comes.
-  const pid_t pid = start(ws, {"simulate", sdof_case, "--out", "result", "--set", "rolling.duration=400",
+  const pid_t pid = start_rollnoise(ws, {"simulate", sdof_case, "--out", "result", "--set", "rolling.duration=400",
                                "--set", "rolling.time_step=1e-4", "--set", "output.plots=false"});
   ASSERT_GT(pid, 0);
   const auto deadline = Clock::now() + std::chrono::seconds(60);
