@@ -170,4 +170,74 @@ TEST(OversizedCase, SizesWhoseProductOverflowsAreExitStatus2) {
   EXPECT_EQ(count_lines(huge.err), 1u) << huge.err;
 }
 
+// A generated road of 6.5e7 samples on 1000 lines: about 500 GB in memory and 1.6 TB of
+// road.csv. Refused before a stone is placed, naming the options and --force.
+TEST(OversizedCase, ARoadTooLargeForTheMachineIsRefusedInWellUnderASecond) {
+  Workspace ws;
+  const std::string dac11 = std::string(ROLLNOISE_SOURCE_DIR) + "/models/surfaces/dac11.toml";
+  const auto started = Clock::now();
+  const RunResult r = ws.run({"road", dac11, "--length", "13000", "--lines", "1000", "--out", "result"});
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_LT(seconds, 0.5) << "took " << seconds << " s to refuse";
+  EXPECT_TRUE(contains(r.err, "dac11.toml: --length, --spacing, --lines: the run (6.5e+07 samples × 1000 lines)"))
+      << r.err;
+  EXPECT_TRUE(contains(r.err, "--force")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+// road, greens and calibrate under a 16 kB file-size limit: each output is larger (road.csv
+// 1.75 MB, receptance.csv 27 kB, fit.csv 190 kB), so each is refused up front (exit 2, the
+// options that set the size, --force); with --force each runs and its write fails (exit 1,
+// the partial output removed); without the limit each succeeds.
+void expect_refused_then_forced(const Workspace& ws, const std::vector<std::string>& args, const std::string& keys) {
+  const std::string limit = "ulimit -f 32; ";
+  const auto started = Clock::now();
+  const RunResult refused = ws.run(args, limit);
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_EQ(refused.status, 2) << describe(refused);
+  EXPECT_LT(seconds, 0.5) << "took " << seconds << " s to refuse";
+  EXPECT_TRUE(contains(refused.err, keys + ": the run (")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "of output, and the disk has")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--force")) << refused.err;
+  EXPECT_EQ(count_lines(refused.err), 1u) << refused.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+
+  std::vector<std::string> forced_args(args);
+  forced_args.push_back("--force");
+  const RunResult forced = ws.run(forced_args, limit);
+  EXPECT_EQ(forced.status, 1) << describe(forced);
+  EXPECT_TRUE(contains(forced.err, "File too large")) << forced.err;
+  EXPECT_TRUE(contains(forced.err, "the partial output was removed")) << forced.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+
+  const RunResult ok = ws.run(args);
+  EXPECT_EQ(ok.status, 0) << describe(ok);
+}
+
+TEST(OversizedCase, RoadLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  ws.write("sine.toml", "[road]\ntype = \"sine\"\namplitude = 1e-3\nwavelength = 0.1\n");
+  expect_refused_then_forced(ws, {"road", "sine.toml", "--out", "result"}, "sine.toml: --length, --spacing, --lines");
+}
+
+TEST(OversizedCase, GreensLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  expect_refused_then_forced(
+      ws, {"greens", std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", "--out", "result"},
+      "command line: --frequencies, --distances");
+}
+
+TEST(OversizedCase, CalibrateLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  const std::string data = std::string(ROLLNOISE_SOURCE_DIR) + "/data/mobility/sdof_point_mobility.csv";
+  expect_refused_then_forced(
+      ws, {"calibrate", std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", "--data", data,
+           "--out", "result"},
+      data + ": --data, --frequency-range");
+}
+
 }  // namespace

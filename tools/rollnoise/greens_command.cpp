@@ -29,6 +29,7 @@
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "simulation/greens_plots.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -225,6 +226,9 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
                   "Response points, m along the circumference on the centre line from the excitation at the belt "
                   "centre, comma separated (default: 0, 0.05, 0.1, 0.2, 0.5 for a tyre; the points of a point model)")
       ->delimiter(',');
+  cmd->add_flag("--force", options.force,
+                "Run even when the estimate of the tables' memory or output (--frequencies × --distances) "
+                "exceeds what the machine has");
   cmd->footer(
       "Examples:\n"
       "  rollnoise greens models/tyres/passenger_205_55R16.toml --out out/plate_greens\n"
@@ -247,6 +251,11 @@ int run_greens(const GreensOptions& options) {
   const double top_hz = response->default_top_frequency_hz();
   const std::vector<double> frequencies =
       options.frequencies.empty() ? evenly_spaced(0.0, top_hz, 501) : parse_frequencies(options.frequencies);
+
+  const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
+  // Up to 1e5 frequencies × 1e4 distances: tens of GB in memory, hundreds on disk.
+  check_run_fits(estimate_greens_run(frequencies.size(), distances.size()), available_memory_bytes(),
+                 available_disk_bytes(out), options.force);
 
   const auto nf = static_cast<Eigen::Index>(frequencies.size());
   const auto nd = static_cast<Eigen::Index>(distances.size());
@@ -294,7 +303,6 @@ int run_greens(const GreensOptions& options) {
   const bool modal_table_from_cache = modal_table && modal_table->source != response->model();
   if (modal_table) modal_table->source = response->model();
 
-  const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
   StagedOutputDirectory staged(out);
   write_table(staged.staging() / "receptance.csv", frequencies, distances, receptance);
   write_table(staged.staging() / "mobility.csv", frequencies, distances, mobility);

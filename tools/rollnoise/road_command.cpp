@@ -25,6 +25,7 @@
 #include "road/profile_file.hpp"
 #include "road/road_surface.hpp"
 #include "road/texture_spectrum.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -196,6 +197,9 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--width", options.width, "Width over which the lines are spread, m (default 0.16)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", options.force,
+                "Generate the road even when the estimate of its memory or output (--length / --spacing "
+                "× --lines) exceeds what the machine has");
   cmd->footer(
       "Examples:\n"
       "  rollnoise road models/surfaces/dac11.toml --out out/dac11\n"
@@ -216,6 +220,15 @@ int run_road(const RoadOptions& options) {
     throw InputError(options.input, "--length",
                      "--length / --spacing gives more than " + std::to_string(max_profile_samples) + " samples");
   }
+  const fs::path out = options.out.empty() ? fs::path("out") / input.stem() : fs::path(options.out);
+  if (is_toml) {
+    // A generated road's size is set by the command line (up to max_profile_samples × 1000
+    // lines, hundreds of GB): refused before it is sampled when it cannot fit. A profile file's
+    // is bounded by its reader's limits (docs/hardening.md).
+    const auto samples = static_cast<std::uint64_t>(std::floor(options.length / options.spacing)) + 1;
+    check_run_fits(estimate_road_run(samples, static_cast<std::uint64_t>(options.lines), options.input),
+                   available_memory_bytes(), available_disk_bytes(out), options.force);
+  }
   RoadUnderTest road;
   if (is_toml) {
     road = generate(options);
@@ -226,7 +239,6 @@ int run_road(const RoadOptions& options) {
   const LoadedProfile& p = road.profile;
   const ProfileAnalysis analysis = analyse_profile(p.z_lines, p.spacing_m);
 
-  const fs::path out = options.out.empty() ? fs::path("out") / input.stem() : fs::path(options.out);
   StagedOutputDirectory staged(out);
   write_road_csv(staged.staging() / "road.csv", p);
   write_texture_csv(staged.staging() / "texture.csv", analysis.texture);
