@@ -62,6 +62,7 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
   }
   nlohmann::json summary = summarise_contact(trace);
   summary["case"] = file.name();
+  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
   summary["model"] = model->name();
   summary["road"] = road->type();
   summary["settings"] = {{"speed_m_per_s", settings.speed},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "background_run.hpp"
 #include "cli_workspace.hpp"
@@ -238,6 +239,42 @@ TEST(OversizedCase, CalibrateLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) 
       ws, {"calibrate", std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", "--data", data,
            "--out", "result"},
       data + ": --data, --frequency-range");
+}
+
+// Files a case names outside its folder are allowed but listed in summary.json: here the tyre
+// through "../lib/..." and the road profile through a symlink beside the case that points out
+// of its folder. A second case in the same folder names files inside it (one through a ".."
+// that stays inside): its list is empty.
+TEST(CaseFilePaths, SimulateSummaryListsPathsThatLeaveTheCaseFolder) {
+  Workspace ws;
+  fs::create_directories(ws.path("lib"));
+  fs::create_directories(ws.path("cases/inside"));
+  fs::copy_file(std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", ws.path("lib/sdof.toml"));
+  fs::copy_file(ws.path("lib/sdof.toml"), ws.path("cases/inside/sdof.toml"));
+  std::string profile = "x,z\n";
+  for (int i = 0; i <= 200; ++i) profile += std::to_string(i * 0.005) + "," + (i % 2 ? "1e-4" : "0") + "\n";
+  ws.write("lib/profile.csv", profile);
+  ws.write("cases/inside/profile.csv", profile);
+  fs::create_symlink("../lib/profile.csv", ws.path("cases/profile.csv"));
+  const std::string rest =
+      "[rolling]\nspeed = 1.0\nduration = 0.2\ntime_step = 1e-3\nstatic_load = 4.0\n[output]\nplots = false\n";
+  ws.write("cases/outside.toml",
+           "[tyre]\nfile = \"../lib/sdof.toml\"\n[road]\ntype = \"file\"\nfile = \"profile.csv\"\n" + rest);
+  ws.write("cases/inside.toml", "[tyre]\nfile = \"inside/../inside/sdof.toml\"\n[road]\ntype = \"file\"\nfile = "
+                                "\"inside/profile.csv\"\n" + rest);
+
+  const RunResult r = ws.run({"simulate", "cases/outside.toml", "--out", "outside"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const nlohmann::json listed = read_json(ws.path("outside/summary.json"))["paths_outside_case_folder"];
+  const std::string work = fs::canonical(ws.work()).string();
+  const nlohmann::json expected = nlohmann::json::array(
+      {{{"key", "[tyre] file"}, {"file", "cases/outside.toml"}, {"path", "../lib/sdof.toml"}, {"resolved", work + "/lib/sdof.toml"}},
+       {{"key", "[road] file"}, {"file", "cases/outside.toml"}, {"path", "profile.csv"}, {"resolved", work + "/lib/profile.csv"}}});
+  EXPECT_EQ(listed, expected) << listed.dump(2);
+
+  const RunResult inside = ws.run({"simulate", "cases/inside.toml", "--out", "inside"});
+  ASSERT_EQ(inside.status, 0) << describe(inside);
+  EXPECT_EQ(read_json(ws.path("inside/summary.json"))["paths_outside_case_folder"], nlohmann::json::array());
 }
 
 }  // namespace

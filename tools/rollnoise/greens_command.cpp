@@ -343,6 +343,7 @@ int run_greens(const GreensOptions& options) {
 
   nlohmann::json summary;
   summary["model_file"] = options.model;
+  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
   summary["model"] = response->model();
   summary["description"] = response->description();
   summary["circumference_m"] = response->circumference();

@@ -38,6 +38,8 @@ struct RoadUnderTest {
   std::string description;
   std::vector<std::pair<double, double>> target;  // (wavelength m, L_tx dB) of a texture road
   nlohmann::json about;                           // a library surface's [about] table
+  // Files the TOML input named outside their folder, through ".." or a symlink (referenced_file.hpp).
+  std::vector<PathOutsideCaseFolder> paths_outside_folder;
 };
 
 nlohmann::json toml_to_json(const toml::table& table) {
@@ -112,6 +114,7 @@ RoadUnderTest generate(const RoadOptions& options) {
     p.z_lines.push_back(std::move(z));
   }
   progress.finish();
+  out.paths_outside_folder = file->paths_outside_folder();
   return out;
 }
 
@@ -254,6 +257,7 @@ int run_road(const RoadOptions& options) {
   nlohmann::json summary;
   summary["input"] = options.input;
   summary["road"] = road.description;
+  summary["paths_outside_case_folder"] = road.paths_outside_folder;
   if (!road.about.is_null()) summary["about"] = road.about;
   summary["rms_m"] = analysis.rms_m;
   if (analysis.mpd) {
