@@ -155,4 +155,39 @@ TEST(InterruptedRun, SigintStopsStudyWithin1sAndKeepsItsFinishedCases) {
   EXPECT_EQ(fs::last_write_time(kept.front() / "summary.json"), written) << "the finished case was redone";
 }
 
+// A study of two plate-tyre cases (a cheap grid, 0.01 s and 1 s of rolling): SIGTERM while the
+// second is in its step loop. A study's cases show no progress bar; before the fix, the tyre's
+// step loop polled only through it, so the watchdog ended the study with the case's staging
+// folder left behind.
+TEST(InterruptedRun, SigtermStopsAStudyOfTyreCasesInTheirStepLoop) {
+  Workspace ws;
+  const std::string tyre = (source_dir / "models/tyres/passenger_205_55R16.toml").string();
+  ws.write("base.toml", "[tyre]\nfile = \"" + tyre +
+                            "\"\n[road]\ntype = \"flat\"\n[rolling]\nspeed = 22.222\nduration = 0.01\n"
+                            "static_load = 3200.0\npoints_lateral = 6\ncontact_window = 0.15\nband_top = 1000\n"
+                            "[radiation]\nreceivers = [\"cpx_front\"]\nmesh_around = 32\nmesh_across = 2\n"
+                            "sidewall_rings = 4\nanchor_spacing = 500\ncontact_refinement = 3\n"
+                            "[output]\nplots = false\nwav = false\n");
+  ws.write("study.toml", "[study]\nname = \"tyres\"\ncase = \"base.toml\"\n[vary]\nrolling.duration = [0.01, 1.0]\n");
+  const fs::path cases = ws.path("s") / "cases";
+  const auto count = [&](bool hidden) {
+    std::size_t n = 0;
+    std::error_code ec;
+    for (fs::directory_iterator it(cases, ec), end; !ec && it != end; it.increment(ec))
+      n += (it->path().filename().string()[0] == '.') == hidden;
+    return n;
+  };
+  const pid_t pid = start_rollnoise(ws, {"study", "study.toml", "--out", "s", "--threads", "1"});
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(wait_until([&] { return count(false) == 1 && count(true) == 1; }, 60s))
+      << "the study never got to its second case; stderr: " << stderr_of(ws);
+  std::this_thread::sleep_for(200ms);
+  ASSERT_TRUE(still_running(pid)) << "the long case ended before the signal; stderr: " << stderr_of(ws);
+  const StoppedRun r = stop_with(ws, pid, SIGTERM);
+  expect_clean_stop(r, SIGTERM);
+  EXPECT_EQ(count(false), 1u) << "the finished case is kept";
+  EXPECT_EQ(count(true), 0u) << "the stopped case's staging folder is left";
+  EXPECT_FALSE(fs::exists(ws.path("s/results.csv")));
+}
+
 }  // namespace
