@@ -16,6 +16,7 @@
 #include "contact/pmatrix_lcp.hpp"
 #include "contact/static_contact.hpp"
 #include "contact/window_convolution.hpp"
+#include "core/cancellation.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "road/road_surface.hpp"
@@ -327,6 +328,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   for (int j = 0; j < grid.lateral; ++j)
     for (std::size_t m = 0; m + 1 < road_positions; ++m)
       road_ring(static_cast<Eigen::Index>(m), j) = filtered_height(m, j);
+  // Ctrl-C is polled every step, also when no progress is shown (a study's cases).
+  const CancellationToken cancel;
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
     const std::size_t newest = road_positions - 1 + n;  // m = (W − 1)·p + n
@@ -414,7 +417,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       sink->take(ContactStep{n, t, force, position, r});
       trace.sink_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     }
-    if (progress) progress->update(n);
+    if (progress)
+      progress->update(n);
+    else
+      cancel.throw_if_cancelled();
   }
   trace.step_loop_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count() - trace.sink_seconds;

@@ -31,21 +31,14 @@ toml::table parse_toml_file(const fs::path& path) {
 }
 
 fs::path resolve_referenced_file(const fs::path& referenced, const fs::path& case_file) {
-  if (referenced.is_absolute()) return referenced;
-  std::error_code ec;
-  const fs::path case_dir = case_file.parent_path();
-  const fs::path beside = case_dir / referenced;
-  if (fs::exists(beside, ec)) return beside;
-  if (fs::exists(referenced, ec)) return referenced;
-  for (fs::path dir = fs::absolute(case_dir, ec); !dir.empty() && dir != dir.root_path();
-       dir = dir.parent_path()) {
-    if (fs::exists(dir / referenced, ec)) return dir / referenced;
-  }
-  return beside;  // does not exist: parse_toml_file reports it
+  return find_referenced_file(referenced, case_file).path;
 }
 
 CaseFile::CaseFile(fs::path path, toml::table root)
-    : path_(std::move(path)), root_(std::move(root)), provenance_(std::make_shared<Provenance>()) {}
+    : path_(std::move(path)),
+      root_(std::move(root)),
+      provenance_(std::make_shared<Provenance>()),
+      outside_(std::make_shared<PathsOutsideCaseFolder>()) {}
 
 namespace {
 
@@ -129,7 +122,8 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
                                             library_folder + "/NAME.toml\")");
   }
   const std::string named = *ref->value<std::string>();
-  const fs::path file_path = resolve_referenced_file(named, path_);
+  const ReferencedFile found = find_referenced_file(named, path_);
+  const fs::path& file_path = found.path;
   std::error_code ec;
   if (!fs::exists(file_path, ec)) {
     // List what there is: in the library folder nearest the case file (models/surfaces in its
@@ -154,6 +148,7 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
     throw InputError(key_source, where, problem);
   }
   toml::table library = parse_toml_file(file_path);
+  outside_->note(where, key_source, named, found);
   // Keys beside `key` override the library file's.
   for (auto& [k, node] : *table) {
     if (k.str() != key) library.insert_or_assign(k.str(), node);
@@ -198,15 +193,15 @@ ConfigTable CaseFile::section(std::string_view name) const {
   if (!node->is_table()) {
     throw InputError(this->name(), std::string(name), "must be a table ([" + std::string(name) + "])");
   }
-  return ConfigTable(*node->as_table(), this->name(), std::string(name), provenance_);
+  return ConfigTable(*node->as_table(), this->name(), std::string(name), provenance_, outside_);
 }
 
 ConfigTable CaseFile::optional_section(std::string_view name) const {
-  if (!root_.get(name)) return ConfigTable(empty_, this->name(), std::string(name), provenance_);
+  if (!root_.get(name)) return ConfigTable(empty_, this->name(), std::string(name), provenance_, outside_);
   return section(name);
 }
 
-ConfigTable CaseFile::top() const { return ConfigTable(root_, name(), "", provenance_); }
+ConfigTable CaseFile::top() const { return ConfigTable(root_, name(), "", provenance_, outside_); }
 
 void CaseFile::reject_unknown_sections(const std::vector<std::string>& allowed) const {
   for (const auto& [key, node] : root_) {

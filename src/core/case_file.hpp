@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "core/config_table.hpp"
+#include "core/referenced_file.hpp"
 
 namespace rollnoise {
 
@@ -49,6 +50,11 @@ class CaseFile {
   // Rejects top-level keys or tables other than `allowed`.
   void reject_unknown_sections(const std::vector<std::string>& allowed) const;
 
+  // The files this case named (its library files, and those its tables' readers resolved so
+  // far) that lie outside the folder they were looked up in, through ".." or a symlink: for
+  // the summary ("paths_outside_case_folder").
+  std::vector<PathOutsideCaseFolder> paths_outside_folder() const { return outside_->entries(); }
+
  private:
   CaseFile(std::filesystem::path path, toml::table root);
   void apply_overrides(const std::vector<std::string>& overrides, const std::string& prefix);
@@ -60,11 +66,10 @@ class CaseFile {
   toml::table root_;
   toml::table empty_;
   std::shared_ptr<Provenance> provenance_;
+  std::shared_ptr<PathsOutsideCaseFolder> outside_;
 };
 
-// Finds a file named in a case file: relative to the case file's folder, then to the current
-// folder, then to each folder above the case file (so "models/tyres/x.toml" works from a case
-// anywhere in the project).
+// find_referenced_file(...).path (core/referenced_file.hpp): the file a case file names.
 std::filesystem::path resolve_referenced_file(const std::filesystem::path& referenced,
                                               const std::filesystem::path& case_file);
 

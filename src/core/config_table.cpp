@@ -26,11 +26,13 @@ std::string join(const std::vector<std::string>& items) {
 }  // namespace
 
 ConfigTable::ConfigTable(const toml::table& table, std::string source, std::string section,
-                         std::shared_ptr<const Provenance> provenance)
+                         std::shared_ptr<const Provenance> provenance,
+                         std::shared_ptr<PathsOutsideCaseFolder> outside)
     : table_(&table),
       source_(std::move(source)),
       section_(std::move(section)),
-      provenance_(std::move(provenance)) {}
+      provenance_(std::move(provenance)),
+      outside_(std::move(outside)) {}
 
 std::string ConfigTable::source_of(std::string_view key) const {
   if (provenance_) {
@@ -47,6 +49,13 @@ std::string ConfigTable::where(std::string_view key) const {
 
 void ConfigTable::fail(std::string_view key, const std::string& problem) const {
   throw InputError(source_of(key), where(key), problem);
+}
+
+void ConfigTable::note_referenced_file(std::string_view key, const ReferencedFile& found) const {
+  if (!outside_) return;
+  const toml::node* node = find(key);
+  const auto written = node ? node->value<std::string>() : std::nullopt;
+  outside_->note(where(key), source_of(key), written.value_or(found.path.string()), found);
 }
 
 const toml::node* ConfigTable::find(std::string_view key) const {
@@ -159,7 +168,7 @@ std::optional<ConfigTable> ConfigTable::subtable(std::string_view key) const {
   if (!node) return std::nullopt;
   if (!node->is_table()) fail(key, "must be a table (for example [" + section_ + "." + std::string(key) + "])");
   const std::string path = section_.empty() ? std::string(key) : section_ + "." + std::string(key);
-  return ConfigTable(*node->as_table(), source_of(key), path, provenance_);
+  return ConfigTable(*node->as_table(), source_of(key), path, provenance_, outside_);
 }
 
 void ConfigTable::reject_unknown_keys() const {

@@ -13,6 +13,8 @@
 
 #include <toml++/toml.h>
 
+#include "core/referenced_file.hpp"
+
 namespace rollnoise {
 
 // Where each value came from, by dotted path ("tyre.mass"): a model file or "--set". Paths
@@ -21,8 +23,11 @@ using Provenance = std::map<std::string, std::string>;
 
 class ConfigTable {
  public:
+  // `outside`: where note_referenced_file() records files named outside their folder (the
+  // CaseFile's list, for the summary); none for a table read on its own.
   ConfigTable(const toml::table& table, std::string source, std::string section,
-              std::shared_ptr<const Provenance> provenance = nullptr);
+              std::shared_ptr<const Provenance> provenance = nullptr,
+              std::shared_ptr<PathsOutsideCaseFolder> outside = nullptr);
 
   const std::string& section() const noexcept { return section_; }
   // The file (or "--set") that holds `key`.
@@ -66,6 +71,10 @@ class ConfigTable {
   // Throws InputError naming `key` with `problem` (for checks that involve several keys).
   [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
 
+  // `key` (a string) named the file `found`: listed in the run's summary when it lies outside
+  // the folder it was looked up in (core/referenced_file.hpp).
+  void note_referenced_file(std::string_view key, const ReferencedFile& found) const;
+
  private:
   const toml::node* find(std::string_view key) const;
   double number_at(std::string_view key, const toml::node& node) const;
@@ -74,6 +83,7 @@ class ConfigTable {
   std::string source_;
   std::string section_;
   std::shared_ptr<const Provenance> provenance_;
+  std::shared_ptr<PathsOutsideCaseFolder> outside_;
   mutable std::set<std::string, std::less<>> known_;
 };
 

@@ -13,11 +13,11 @@ bool ProgressReporter::wanted() {
   return !in_ci && ::isatty(STDERR_FILENO) == 1;
 }
 
-ProgressReporter::ProgressReporter(std::string label, std::size_t total, CancellationToken cancel)
+ProgressReporter::ProgressReporter(std::string label, std::size_t total, CancellationToken cancel, bool shown)
     : label_(std::move(label)),
       cancel_(cancel),
       total_(total),
-      enabled_(wanted()),
+      enabled_(shown && wanted()),
       start_(std::chrono::steady_clock::now()),
       last_(start_) {}
 

@@ -13,7 +13,9 @@ namespace rollnoise {
 class ProgressReporter {
  public:
   // `cancel`: the token update() polls (by default the one SignalCancellation drives).
-  ProgressReporter(std::string label, std::size_t total, CancellationToken cancel = {});
+  // `shown` false: never drawn, but update() still polls `cancel`, so that a loop run quietly
+  // (a study's cases, which draw one line of their own) still stops on Ctrl-C.
+  ProgressReporter(std::string label, std::size_t total, CancellationToken cancel = {}, bool shown = true);
   ~ProgressReporter();
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;

@@ -23,7 +23,11 @@ ModalReceptanceTable read_tabulated_tyre(const ConfigTable& tyre) {
   // Relative to the file that names it, not to the current folder: a model file and its table
   // move together.
   const fs::path named(name);
-  const fs::path path = named.is_absolute() ? named : fs::path(tyre.source_of("file")).parent_path() / named;
+  const fs::path folder = fs::path(tyre.source_of("file")).parent_path();
+  const fs::path path = named.is_absolute() ? named : folder / named;
+  // Listed in the summary when ".." or a symlink takes it outside the model file's folder.
+  tyre.note_referenced_file(
+      "file", ReferencedFile{path, named.is_absolute() ? fs::path() : folder.empty() ? fs::path(".") : folder});
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     tyre.fail("file", "no such file: " + path.string() + " (a relative path is taken from the model file's folder)");

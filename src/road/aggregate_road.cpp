@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cancellation.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -94,7 +95,10 @@ std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k,
   const double hi_p = std::pow(k.dmax, p);
   std::vector<Stone> stones;
   double footprint = 0.0;
+  // Drawing up to 2^25 stones takes seconds: Ctrl-C is polled every 4096 (core/cancellation.hpp).
+  const CancellationToken cancel;
   while (footprint < footprint_needed) {
+    if (((stones.size() + 1) & 4095u) == 0) cancel.throw_if_cancelled();
     const double x = x_lo + (x_hi - x_lo) * portable::uniform_closed_open(engine);
     const double y = -y_half + 2.0 * y_half * portable::uniform_closed_open(engine);
     const double u = portable::uniform_closed_open(engine);
@@ -118,7 +122,11 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
   const double thickness = spec.shape_factor * k.dmax;  // T
   const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
   const double origin = h * static_cast<double>(first);
+  // Raising the grid to up to 2^25 stones takes tens of seconds: polled every 4096 stones too.
+  const CancellationToken cancel;
+  std::size_t raised = 0;
   for (const Stone& s : stones) {
+    if ((++raised & 4095u) == 0) cancel.throw_if_cancelled();
     const double x = s.x - origin, y = s.y, a = s.a, b = s.b, c = s.c, cs = s.cs, sn = s.sn;
     // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); positive:
     // resting on z = 0; negative: cut at the top plane z = T.

@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/cancellation.hpp"
 #include "core/error.hpp"
 
 namespace rollnoise {
@@ -13,6 +14,8 @@ ProfileAnalysis analyse_profile(const std::vector<std::vector<double>>& lines, d
   for (const auto& line : lines)
     if (line.size() != lines.front().size()) throw std::invalid_argument("analyse_profile: lines of unequal length");
   ProfileAnalysis out;
+  // A road of many long lines takes seconds per pass: Ctrl-C is polled line by line.
+  const CancellationToken cancel;
   double squares = 0.0;
   for (const auto& line : lines) {
     const double mean = std::accumulate(line.begin(), line.end(), 0.0) / static_cast<double>(line.size());
@@ -25,6 +28,7 @@ ProfileAnalysis analyse_profile(const std::vector<std::vector<double>>& lines, d
   if (static_cast<double>(lines.front().size()) * spacing_m >= segment_m) {
     MpdResult mean{};
     for (const auto& line : lines) {
+      cancel.throw_if_cancelled();
       const MpdResult one = mean_profile_depth(line, spacing_m);
       mean.mpd_m += one.mpd_m / static_cast<double>(lines.size());
       mean.segments += one.segments;
@@ -36,6 +40,7 @@ ProfileAnalysis analyse_profile(const std::vector<std::vector<double>>& lines, d
 
   // Energy mean of L_tx per band over the lines (same length, so the same bands).
   for (const auto& line : lines) {
+    cancel.throw_if_cancelled();
     const std::vector<TextureBand> bands = texture_spectrum(line, spacing_m);
     if (out.texture.empty()) {
       out.texture = bands;

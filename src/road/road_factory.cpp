@@ -99,7 +99,9 @@ std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, do
       road.choice("spikes", {"remove", "keep"}, "remove") == "keep" ? SpikeHandling::keep : SpikeHandling::remove;
   road.reject_unknown_keys();
   // Relative to the file that set the key (the case file, or a model file it includes).
-  const auto path = resolve_referenced_file(name, road.source_of("file"));
+  const ReferencedFile found = find_referenced_file(name, road.source_of("file"));
+  road.note_referenced_file("file", found);  // listed in the summary when outside its folder
+  const std::filesystem::path& path = found.path;
   return std::make_unique<FileRoad>(path, x_min, x_max, spikes);
 }
 

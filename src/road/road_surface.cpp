@@ -80,7 +80,9 @@ std::unique_ptr<RoadSurface> make_height_map(const ConfigTable& road, double x_m
   if (name.empty()) road.fail("file", "must name a CSV file (columns x,y,z in m, one row per grid point)");
   road.reject_unknown_keys();
   // Relative to the file that set the key (the case file, or a model file it includes).
-  const auto path = resolve_referenced_file(name, road.source_of("file"));
+  const ReferencedFile found = find_referenced_file(name, road.source_of("file"));
+  road.note_referenced_file("file", found);  // listed in the summary when outside its folder
+  const std::filesystem::path& path = found.path;
   return std::make_unique<HeightMapSurface>(path, x_min, x_max, half_width);
 }
 

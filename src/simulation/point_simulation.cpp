@@ -51,9 +51,10 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
   for (const auto& warning : check_time_step(*model, settings.time_step)) {
     std::fprintf(stderr, "rollnoise: warning: %s: %s\n", rolling.source_of("time_step").c_str(), warning.c_str());
   }
-  std::optional<ProgressReporter> progress;
-  if (options.progress) progress.emplace("simulate " + fs::path(file.path()).filename().string(), settings.steps() + 1);
-  const ContactTrace trace = simulate_point_contact(*model, *road, settings, progress ? &*progress : nullptr);
+  // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
+  ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), settings.steps() + 1, {},
+                            options.progress);
+  const ContactTrace trace = simulate_point_contact(*model, *road, settings, &progress);
 
   write_contact_csv(staged.staging() / "contact.csv", trace);
   if (plots) {
@@ -61,6 +62,7 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
   }
   nlohmann::json summary = summarise_contact(trace);
   summary["case"] = file.name();
+  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
   summary["model"] = model->name();
   summary["road"] = road->type();
   summary["settings"] = {{"speed_m_per_s", settings.speed},

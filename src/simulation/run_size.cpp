@@ -64,4 +64,50 @@ RunEstimate estimate_tyre_run(const TyreRunSize& z, const std::string& source) {
   return e;
 }
 
+RunEstimate estimate_road_run(std::uint64_t samples, std::uint64_t lines, const std::string& source) {
+  RunEstimate e;
+  e.source = source;
+  e.keys = {"--length", "--spacing", "--lines"};
+  const std::string keys = "--length, --spacing, --lines";
+  // The lines and x (doubles), and the analysis's working copies of one line at a time (the
+  // detrended line and its spectrum: about four lines' worth).
+  const std::uint64_t values = checked_product({samples, checked_sum({lines, 1, 4}, source, keys)}, source, keys);
+  e.memory_bytes = checked_product({values, 8}, source, keys);
+  // road.csv: about 25 characters a number, x and one number a line on each row.
+  e.disk_bytes = checked_product({samples, checked_sum({lines, 1}, source, keys), 25}, source, keys);
+  e.what = count(samples) + " samples × " + count(lines) + " lines";
+  return e;
+}
+
+RunEstimate estimate_greens_run(std::uint64_t frequencies, std::uint64_t distances) {
+  RunEstimate e;
+  e.source = "command line";
+  e.keys = {"--frequencies", "--distances"};
+  const std::string keys = "--frequencies, --distances";
+  const std::uint64_t cells = checked_product({frequencies, distances}, e.source, keys);
+  // Receptance and mobility (complex doubles), and the real and imaginary copies for greens.h5.
+  e.memory_bytes = checked_product({cells, 2 * 16 + 2 * 8}, e.source, keys);
+  // receptance.csv and mobility.csv (four numbers a row, about 25 characters each) and greens.h5.
+  e.disk_bytes = checked_product({cells, 2 * 4 * 25 + 16}, e.source, keys);
+  e.what = count(frequencies) + " frequencies × " + count(distances) + " distances";
+  return e;
+}
+
+RunEstimate estimate_calibration_run(std::uint64_t lines, std::uint64_t parameters, const std::string& source) {
+  RunEstimate e;
+  e.source = source;
+  e.keys = {"--data", "--frequency-range"};
+  const std::string keys = "--data, --frequency-range";
+  // The Jacobian (two residuals a line, a column a parameter and one more for the residuals),
+  // and per line the measured, fitted and weighted values (about 100 bytes).
+  e.memory_bytes = checked_product(
+      {lines, checked_sum({checked_product({2, checked_sum({parameters, 1}, source, keys), 8}, source, keys), 100},
+                          source, keys)},
+      source, keys);
+  // fit.csv: 11 numbers a line, about 25 characters each.
+  e.disk_bytes = checked_product({lines, 11 * 25}, source, keys);
+  e.what = count(lines) + " measured lines, " + count(parameters) + " parameters";
+  return e;
+}
+
 }  // namespace rollnoise

@@ -1,7 +1,8 @@
 #pragma once
-// What a simulate run holds in memory and writes to disk, counted from its sizes before it
-// starts (core/run_estimate.hpp refuses the run when it cannot fit). Rough but on the safe
-// side: the large arrays only, each counted once.
+// What a run holds in memory and writes to disk, counted from its sizes before it starts
+// (core/run_estimate.hpp refuses the run when it cannot fit): simulate's point and tyre runs,
+// and the verbs whose size grows with their arguments (road, greens, calibrate). Rough but on
+// the safe side: the large arrays only, each counted once.
 #include <cstdint>
 #include <string>
 
@@ -30,5 +31,17 @@ struct TyreRunSize {
   SurfaceBlock block;                 // the belt velocity's decimation for ContactFields::contact
 };
 RunEstimate estimate_tyre_run(const TyreRunSize& size, const std::string& source);
+
+// `rollnoise road` on a generated road: `samples` along each of `lines` lines (--length /
+// --spacing, --lines), held as doubles and written to road.csv (x and one column a line).
+RunEstimate estimate_road_run(std::uint64_t samples, std::uint64_t lines, const std::string& source);
+
+// `rollnoise greens`: the receptance and mobility at `frequencies` × `distances` (complex, in
+// memory), written twice to CSV (four numbers a row) and once to greens.h5.
+RunEstimate estimate_greens_run(std::uint64_t frequencies, std::uint64_t distances);
+
+// `rollnoise calibrate`: `lines` measured lines over all FRFs, `parameters` of them fitted (the
+// Jacobian holds two residuals a line per parameter); fit.csv has 11 numbers a line.
+RunEstimate estimate_calibration_run(std::uint64_t lines, std::uint64_t parameters, const std::string& source);
 
 }  // namespace rollnoise

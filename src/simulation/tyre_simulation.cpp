@@ -309,6 +309,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   const double mean_power = trace.input_power.mean();
   nlohmann::json summary;
   summary["case"] = file.name();
+  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
   summary["model"] = model.model;
   summary["tread"] = !model.tread                                         ? "included in the model"
                      : model.tread->type == TreadSettings::Type::winkler   ? "winkler"

@@ -136,12 +136,12 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   for (std::size_t r = 0; r < settings.receivers.size(); ++r)
     positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
   const TyreRadiation radiation(settings.radiation, positions);
-  std::optional<ProgressReporter> bar;
-  if (progress) bar.emplace("radiation " + source, radiation.anchors(sample_rate).size());
+  // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
+  ProgressReporter bar("radiation " + source, radiation.anchors(sample_rate).size(), {}, progress);
   std::optional<RadiationCache> cache;
   if (settings.cache_folder) cache.emplace(*settings.cache_folder);
-  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, bar ? &*bar : nullptr, cache ? &*cache : nullptr);
-  if (bar) bar->finish();
+  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
+  bar.finish();
   const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
   const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/cancellation.hpp"
 #include "core/case_file.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
@@ -83,6 +84,12 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex mutex;
+  // Ctrl-C or SIGTERM (core/cancellation.hpp): no case starts after it, the running ones stop
+  // at their next poll (their staging folders go), the finished ones stay for a rerun, and
+  // the Interrupted is rethrown once every worker is back, so that main() exits 130/143
+  // rather than counting the stopped cases as failed ones.
+  const CancellationToken cancel;
+  std::exception_ptr interrupted;
   std::size_t done = 0, run = 0, failed = 0;
   StudyProgress progress(spec.name, mine.size(), options.progress && mpi.size() == 1);
   const auto work = [&] {
@@ -96,6 +103,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
       }
       const auto started = std::chrono::steady_clock::now();
       try {
+        cancel.throw_if_cancelled();
         const toml::table table = study_case_table(spec, c);
         CaseRunOptions run_options;
         run_options.progress = false;
@@ -110,6 +118,11 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
           run_case(study_case_file(spec, table), folder, run_options);
           outcome.status = "ok";
         }
+      } catch (const Interrupted&) {
+        const std::lock_guard lock(mutex);
+        if (!interrupted) interrupted = std::current_exception();
+        next = mine.size();
+        return;
       } catch (const InputError& error) {
         outcome.status = "failed";
         outcome.message = error.what();
@@ -135,6 +148,9 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
     for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }
+  if (interrupted) std::rethrow_exception(interrupted);
+  // A signal after the last case: the results are not written either (the finished cases are).
+  cancel.throw_if_cancelled();
 
   // Rank 0 gathers the outcomes of the others' cases.
   nlohmann::json mine_json = nlohmann::json::object();

@@ -3,7 +3,9 @@
 // folder, on worker threads, and spread over the MPI ranks (case i on rank i mod size). A case
 // whose folder holds its summary.json and the same case.toml is finished and is skipped (the
 // folder is committed atomically, so a case cut off leaves none and is redone). To start over,
-// the caller removes cases/ first (`--restart`).
+// the caller removes cases/ first (`--restart`). On Ctrl-C or SIGTERM no case starts, the
+// running ones stop and Interrupted is thrown (no outcomes, no results): the finished cases
+// stay for a rerun.
 #include <cstddef>
 #include <filesystem>
 #include <optional>

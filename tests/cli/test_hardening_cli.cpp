@@ -11,7 +11,9 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include "background_run.hpp"
 #include "cli_workspace.hpp"
 
 namespace {
@@ -36,28 +38,6 @@ void expect_earlier_output(const Workspace& ws) {
   EXPECT_EQ(names, (std::set<std::string>{"contact.csv", "summary.json"}));
 }
 
-// Starts `rollnoise args...` in work(); stdout and stderr go to files beside work().
-pid_t start(const Workspace& ws, const std::vector<std::string>& args) {
-  const fs::path out = ws.work().parent_path() / "stdout.txt";
-  const fs::path err = ws.work().parent_path() / "stderr.txt";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(ws.work().c_str()) != 0) ::_exit(127);
-    if (!std::freopen("/dev/null", "r", stdin) || !std::freopen(out.c_str(), "w", stdout) ||
-        !std::freopen(err.c_str(), "w", stderr))
-      ::_exit(127);
-    std::vector<char*> argv;
-    std::string binary = ROLLNOISE_BINARY;
-    argv.push_back(binary.data());
-    std::vector<std::string> copies(args);
-    for (std::string& a : copies) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(binary.c_str(), argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
 // The staging folder of a run writing work()/result: ".result.partial-PID".
 fs::path staging_of(const Workspace& ws, pid_t pid) {
   return ws.work() / (".result.partial-" + std::to_string(pid));
@@ -71,7 +51,7 @@ void stop_running_simulate(int signal_number) {
   write_earlier_output(ws);
   // About a minute of time steps for the direct history engine: the run is still going when
   // the signal comes.
-  const pid_t pid = start(ws, {"simulate", sdof_case, "--out", "result", "--set", "rolling.duration=400",
+  const pid_t pid = start_rollnoise(ws, {"simulate", sdof_case, "--out", "result", "--set", "rolling.duration=400",
                                "--set", "rolling.time_step=1e-4", "--set", "output.plots=false"});
   ASSERT_GT(pid, 0);
   const auto deadline = Clock::now() + std::chrono::seconds(60);
@@ -189,6 +169,112 @@ TEST(OversizedCase, SizesWhoseProductOverflowsAreExitStatus2) {
   const RunResult huge = ws.run({"simulate", plate_case, "--out", "result", "--set", "rolling.duration=1e300"});
   EXPECT_EQ(huge.status, 2) << describe(huge);
   EXPECT_EQ(count_lines(huge.err), 1u) << huge.err;
+}
+
+// A generated road of 6.5e7 samples on 1000 lines: about 500 GB in memory and 1.6 TB of
+// road.csv. Refused before a stone is placed, naming the options and --force.
+TEST(OversizedCase, ARoadTooLargeForTheMachineIsRefusedInWellUnderASecond) {
+  Workspace ws;
+  const std::string dac11 = std::string(ROLLNOISE_SOURCE_DIR) + "/models/surfaces/dac11.toml";
+  const auto started = Clock::now();
+  const RunResult r = ws.run({"road", dac11, "--length", "13000", "--lines", "1000", "--out", "result"});
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_LT(seconds, 0.5) << "took " << seconds << " s to refuse";
+  EXPECT_TRUE(contains(r.err, "dac11.toml: --length, --spacing, --lines: the run (6.5e+07 samples × 1000 lines)"))
+      << r.err;
+  EXPECT_TRUE(contains(r.err, "--force")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty());
+}
+
+// road, greens and calibrate under a 16 kB file-size limit: each output is larger (road.csv
+// 1.75 MB, receptance.csv 27 kB, fit.csv 190 kB), so each is refused up front (exit 2, the
+// options that set the size, --force); with --force each runs and its write fails (exit 1,
+// the partial output removed); without the limit each succeeds.
+void expect_refused_then_forced(const Workspace& ws, const std::vector<std::string>& args, const std::string& keys) {
+  const std::string limit = "ulimit -f 32; ";
+  const auto started = Clock::now();
+  const RunResult refused = ws.run(args, limit);
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_EQ(refused.status, 2) << describe(refused);
+  EXPECT_LT(seconds, 0.5) << "took " << seconds << " s to refuse";
+  EXPECT_TRUE(contains(refused.err, keys + ": the run (")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "of output, and the disk has")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--force")) << refused.err;
+  EXPECT_EQ(count_lines(refused.err), 1u) << refused.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+
+  std::vector<std::string> forced_args(args);
+  forced_args.push_back("--force");
+  const RunResult forced = ws.run(forced_args, limit);
+  EXPECT_EQ(forced.status, 1) << describe(forced);
+  EXPECT_TRUE(contains(forced.err, "File too large")) << forced.err;
+  EXPECT_TRUE(contains(forced.err, "the partial output was removed")) << forced.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+
+  const RunResult ok = ws.run(args);
+  EXPECT_EQ(ok.status, 0) << describe(ok);
+}
+
+TEST(OversizedCase, RoadLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  ws.write("sine.toml", "[road]\ntype = \"sine\"\namplitude = 1e-3\nwavelength = 0.1\n");
+  expect_refused_then_forced(ws, {"road", "sine.toml", "--out", "result"}, "sine.toml: --length, --spacing, --lines");
+}
+
+TEST(OversizedCase, GreensLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  expect_refused_then_forced(
+      ws, {"greens", std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", "--out", "result"},
+      "command line: --frequencies, --distances");
+}
+
+TEST(OversizedCase, CalibrateLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {
+  Workspace ws;
+  const std::string data = std::string(ROLLNOISE_SOURCE_DIR) + "/data/mobility/sdof_point_mobility.csv";
+  expect_refused_then_forced(
+      ws, {"calibrate", std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", "--data", data,
+           "--out", "result"},
+      data + ": --data, --frequency-range");
+}
+
+// Files a case names outside its folder are allowed but listed in summary.json: here the tyre
+// through "../lib/..." and the road profile through a symlink beside the case that points out
+// of its folder. A second case in the same folder names files inside it (one through a ".."
+// that stays inside): its list is empty.
+TEST(CaseFilePaths, SimulateSummaryListsPathsThatLeaveTheCaseFolder) {
+  Workspace ws;
+  fs::create_directories(ws.path("lib"));
+  fs::create_directories(ws.path("cases/inside"));
+  fs::copy_file(std::string(ROLLNOISE_SOURCE_DIR) + "/models/tyres/larsson2000_sdof.toml", ws.path("lib/sdof.toml"));
+  fs::copy_file(ws.path("lib/sdof.toml"), ws.path("cases/inside/sdof.toml"));
+  std::string profile = "x,z\n";
+  for (int i = 0; i <= 200; ++i) profile += std::to_string(i * 0.005) + "," + (i % 2 ? "1e-4" : "0") + "\n";
+  ws.write("lib/profile.csv", profile);
+  ws.write("cases/inside/profile.csv", profile);
+  fs::create_symlink("../lib/profile.csv", ws.path("cases/profile.csv"));
+  const std::string rest =
+      "[rolling]\nspeed = 1.0\nduration = 0.2\ntime_step = 1e-3\nstatic_load = 4.0\n[output]\nplots = false\n";
+  ws.write("cases/outside.toml",
+           "[tyre]\nfile = \"../lib/sdof.toml\"\n[road]\ntype = \"file\"\nfile = \"profile.csv\"\n" + rest);
+  ws.write("cases/inside.toml", "[tyre]\nfile = \"inside/../inside/sdof.toml\"\n[road]\ntype = \"file\"\nfile = "
+                                "\"inside/profile.csv\"\n" + rest);
+
+  const RunResult r = ws.run({"simulate", "cases/outside.toml", "--out", "outside"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const nlohmann::json listed = read_json(ws.path("outside/summary.json"))["paths_outside_case_folder"];
+  const std::string work = fs::canonical(ws.work()).string();
+  const nlohmann::json expected = nlohmann::json::array(
+      {{{"key", "[tyre] file"}, {"file", "cases/outside.toml"}, {"path", "../lib/sdof.toml"}, {"resolved", work + "/lib/sdof.toml"}},
+       {{"key", "[road] file"}, {"file", "cases/outside.toml"}, {"path", "profile.csv"}, {"resolved", work + "/lib/profile.csv"}}});
+  EXPECT_EQ(listed, expected) << listed.dump(2);
+
+  const RunResult inside = ws.run({"simulate", "cases/inside.toml", "--out", "inside"});
+  ASSERT_EQ(inside.status, 0) << describe(inside);
+  EXPECT_EQ(read_json(ws.path("inside/summary.json"))["paths_outside_case_folder"], nlohmann::json::array());
 }
 
 }  // namespace

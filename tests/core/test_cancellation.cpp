@@ -31,6 +31,16 @@ TEST(Cancellation, ProgressUpdatesThrowInterruptedOnceTheTokenIsCancelled) {
   }
 }
 
+// A reporter that is never drawn (a study's cases) polls all the same: without it, a quiet
+// loop would run on after Ctrl-C until the watchdog ended the process.
+TEST(Cancellation, AReporterThatIsNotShownStillPollsTheToken) {
+  std::atomic<int> flag{0};
+  ProgressReporter quiet("test", 1000, CancellationToken(flag), false);
+  quiet.update(1);
+  flag = SIGINT;
+  EXPECT_THROW(quiet.update(2), Interrupted);
+}
+
 TEST(Cancellation, ASignalSetsTheDefaultTokenAndTheHandlersAreRestored) {
   void (*before)(int) = std::signal(SIGINT, SIG_DFL);
   {

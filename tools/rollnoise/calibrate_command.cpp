@@ -25,6 +25,7 @@
 #include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
 #include "core/progress.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -373,6 +374,9 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--loss-scale", options.loss_scale,
                   "Scale of the Cauchy loss on the log residual: lines far beyond it (outliers) weigh less")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", options.force,
+                "Run even when the estimate of the fit's memory or output (its measured lines) exceeds what the "
+                "machine has");
   cmd->footer(
       "Example:\n  rollnoise calibrate models/tyres/passenger_205_55R16.toml \\\n"
       "    --data data/mobility/tyre_point_mobility.csv data/mobility/tyre_transfer_mobility.csv \\\n"
@@ -400,6 +404,17 @@ int run_calibrate(CalibrateOptions options) {
     if (frf.size() > 0) data_top = std::max(data_top, frf.frequency_hz.maxCoeff());
   if (data_top > settings.min_frequency_hz && data_top < model->highest_frequency_hz())
     model = make_calibration_model(model_file, data_top);
+  // The fit's size follows the data (no reader caps it): refused before a long fit whose
+  // fit.csv would not fit on the disk. Every line and parameter counted: on the safe side.
+  const fs::path out = options.out.empty() ? fs::path("out") / (fs::path(options.model).stem().string() + "_calibrated")
+                                           : fs::path(options.out);
+  {
+    std::uint64_t lines = 0;
+    for (const MeasuredFrf& frf : data) lines += static_cast<std::uint64_t>(frf.size());
+    const std::string source = options.data.size() == 1 ? options.data.front() : "the --data files";
+    check_run_fits(estimate_calibration_run(lines, model->parameters().size() + 1, source), available_memory_bytes(),
+                   available_disk_bytes(out), options.force);
+  }
 
   settings.free = options.fit;
   settings.transducer_mass = options.transducer_mass;
@@ -420,8 +435,6 @@ int run_calibrate(CalibrateOptions options) {
   const CalibrationResult result = calibrate(*model, data, settings);
   progress.finish();
 
-  const fs::path out = options.out.empty() ? fs::path("out") / (fs::path(options.model).stem().string() + "_calibrated")
-                                           : fs::path(options.out);
   std::string original;
   {
     std::ifstream in(options.model, std::ios::binary);

@@ -27,6 +27,7 @@ struct CalibrateOptions {
   std::uint64_t seed = 1;
   double loss_scale = 0.25;
   double first_stage = -1.0;            // Hz; < 0: the model's choice, 0: no frequency continuation
+  bool force = false;            // run even when the size estimate says it does not fit
   bool data_type_given = false;  // filled after parsing
 };
 

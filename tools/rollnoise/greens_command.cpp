@@ -31,6 +31,7 @@
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "simulation/greens_plots.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -105,9 +106,13 @@ void write_table(const fs::path& path, const std::vector<double>& f, const std::
                  const Eigen::MatrixXcd& values) {
   std::ofstream out(path, std::ios::binary);
   CsvWriter csv(out, {"frequency_hz", "distance_m", "re", "im"});
+  // Up to 1e9 rows, with the staging folder there: polled row by row, so that Ctrl-C removes
+  // it (the watchdog would leave it behind).
+  const CancellationToken cancel;
   // Distance by distance, so that each response point is one block of rows (and one line).
   for (std::size_t j = 0; j < d.size(); ++j)
     for (std::size_t i = 0; i < f.size(); ++i) {
+      cancel.throw_if_cancelled();
       const std::complex<double> v = values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
       const double row[] = {f[i], d[j], v.real(), v.imag()};
       csv.row(row, 4);
@@ -224,6 +229,9 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
                   "Response points, m along the circumference on the centre line from the excitation at the belt "
                   "centre, comma separated (default: 0, 0.05, 0.1, 0.2, 0.5 for a tyre; the points of a point model)")
       ->delimiter(',');
+  cmd->add_flag("--force", options.force,
+                "Run even when the estimate of the tables' memory or output (--frequencies × --distances) "
+                "exceeds what the machine has");
   cmd->footer(
       "Examples:\n"
       "  rollnoise greens models/tyres/passenger_205_55R16.toml --out out/plate_greens\n"
@@ -248,6 +256,11 @@ int run_greens(const GreensOptions& options) {
   const double top_hz = response->default_top_frequency_hz();
   const std::vector<double> frequencies =
       options.frequencies.empty() ? evenly_spaced(0.0, top_hz, 501) : parse_frequencies(options.frequencies);
+
+  const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
+  // Up to 1e5 frequencies × 1e4 distances: tens of GB in memory, hundreds on disk.
+  check_run_fits(estimate_greens_run(frequencies.size(), distances.size()), available_memory_bytes(),
+                 available_disk_bytes(out), options.force);
 
   const auto nf = static_cast<Eigen::Index>(frequencies.size());
   const auto nd = static_cast<Eigen::Index>(distances.size());
@@ -295,7 +308,6 @@ int run_greens(const GreensOptions& options) {
   const bool modal_table_from_cache = modal_table && modal_table->source != response->model();
   if (modal_table) modal_table->source = response->model();
 
-  const fs::path out = options.out.empty() ? fs::path("out") / (input.stem().string() + "_greens") : fs::path(options.out);
   StagedOutputDirectory staged(out);
   write_table(staged.staging() / "receptance.csv", frequencies, distances, receptance);
   write_table(staged.staging() / "mobility.csv", frequencies, distances, mobility);
@@ -336,6 +348,7 @@ int run_greens(const GreensOptions& options) {
 
   nlohmann::json summary;
   summary["model_file"] = options.model;
+  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
   summary["model"] = response->model();
   summary["description"] = response->description();
   summary["circumference_m"] = response->circumference();

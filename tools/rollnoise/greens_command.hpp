@@ -16,6 +16,7 @@ struct GreensOptions {
   std::string out;                  // default out/<model name>_greens
   std::string frequencies;          // "F1:F2:N", evenly spaced, inclusive (Hz); default: the model's
   std::vector<double> distances;    // m along the circumference from the excitation; default: the model's
+  bool force = false;               // run even when the size estimate says it does not fit
   std::string cache;                // --cache DIR (empty: the default folder, core/cache_folder.hpp)
   bool no_cache = false;
 };

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include "core/cancellation.hpp"
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
@@ -24,6 +25,7 @@
 #include "road/profile_file.hpp"
 #include "road/road_surface.hpp"
 #include "road/texture_spectrum.hpp"
+#include "simulation/run_size.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -36,6 +38,8 @@ struct RoadUnderTest {
   std::string description;
   std::vector<std::pair<double, double>> target;  // (wavelength m, L_tx dB) of a texture road
   nlohmann::json about;                           // a library surface's [about] table
+  // Files the TOML input named outside their folder, through ".." or a symlink (referenced_file.hpp).
+  std::vector<PathOutsideCaseFolder> paths_outside_folder;
 };
 
 nlohmann::json toml_to_json(const toml::table& table) {
@@ -110,6 +114,7 @@ RoadUnderTest generate(const RoadOptions& options) {
     p.z_lines.push_back(std::move(z));
   }
   progress.finish();
+  out.paths_outside_folder = file->paths_outside_folder();
   return out;
 }
 
@@ -126,7 +131,11 @@ void write_road_csv(const fs::path& path, const LoadedProfile& p) {
   }
   CsvWriter csv(out, header);
   std::vector<double> row(header.size());
+  // Seconds for a long road of many lines, with the staging folder there: polled row by row,
+  // so that Ctrl-C removes it (the watchdog would leave it behind).
+  const CancellationToken cancel;
   for (std::size_t i = 0; i < p.x.size(); ++i) {
+    cancel.throw_if_cancelled();
     row[0] = p.x[i];
     for (std::size_t j = 0; j < p.z_lines.size(); ++j) row[j + 1] = p.z_lines[j][i];
     csv.row(row.data(), row.size());
@@ -191,6 +200,9 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--width", options.width, "Width over which the lines are spread, m (default 0.16)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", options.force,
+                "Generate the road even when the estimate of its memory or output (--length / --spacing "
+                "× --lines) exceeds what the machine has");
   cmd->footer(
       "Examples:\n"
       "  rollnoise road models/surfaces/dac11.toml --out out/dac11\n"
@@ -211,6 +223,15 @@ int run_road(const RoadOptions& options) {
     throw InputError(options.input, "--length",
                      "--length / --spacing gives more than " + std::to_string(max_profile_samples) + " samples");
   }
+  const fs::path out = options.out.empty() ? fs::path("out") / input.stem() : fs::path(options.out);
+  if (is_toml) {
+    // A generated road's size is set by the command line (up to max_profile_samples × 1000
+    // lines, hundreds of GB): refused before it is sampled when it cannot fit. A profile file's
+    // is bounded by its reader's limits (docs/hardening.md).
+    const auto samples = static_cast<std::uint64_t>(std::floor(options.length / options.spacing)) + 1;
+    check_run_fits(estimate_road_run(samples, static_cast<std::uint64_t>(options.lines), options.input),
+                   available_memory_bytes(), available_disk_bytes(out), options.force);
+  }
   RoadUnderTest road;
   if (is_toml) {
     road = generate(options);
@@ -221,7 +242,6 @@ int run_road(const RoadOptions& options) {
   const LoadedProfile& p = road.profile;
   const ProfileAnalysis analysis = analyse_profile(p.z_lines, p.spacing_m);
 
-  const fs::path out = options.out.empty() ? fs::path("out") / input.stem() : fs::path(options.out);
   StagedOutputDirectory staged(out);
   write_road_csv(staged.staging() / "road.csv", p);
   write_texture_csv(staged.staging() / "texture.csv", analysis.texture);
@@ -237,6 +257,7 @@ int run_road(const RoadOptions& options) {
   nlohmann::json summary;
   summary["input"] = options.input;
   summary["road"] = road.description;
+  summary["paths_outside_case_folder"] = road.paths_outside_folder;
   if (!road.about.is_null()) summary["about"] = road.about;
   summary["rms_m"] = analysis.rms_m;
   if (analysis.mpd) {

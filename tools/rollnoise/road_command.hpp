@@ -19,6 +19,7 @@ struct RoadOptions {
   double spacing = 0.2e-3;            // m between the samples of a generated road
   int lines = 1;                      // lateral lines of a generated road
   double width = 0.16;                // m across which the lines are spread
+  bool force = false;                 // run even when the size estimate says it does not fit
 };
 
 CLI::App* add_road_command(CLI::App& app, RoadOptions& options);
