@@ -186,9 +186,23 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
     for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }
-  if (interrupted_by) throw Interrupted(interrupted_by);
   // A signal after the last case: the results are not written either (the finished cases are).
-  cancel.throw_if_cancelled();
+  if (!interrupted_by) {
+    try {
+      cancel.throw_if_cancelled();
+    } catch (const Interrupted& stopped) {
+      interrupted_by = stopped.signal_number();
+    }
+  }
+  // Every rank gets here, stopped or not, before the gather: a rank that threw at once would
+  // leave the others waiting in the gather (and then in MPI_Finalize) until the watchdog ended
+  // them. If any rank was stopped, the whole study is (under mpirun every rank gets the
+  // signal, but not at the same point of its work).
+  const int study_stopped_by = mpi.max_over_ranks(interrupted_by);
+  if (study_stopped_by) {
+    if (mpi.rank() == 0) stop.clear();
+    throw Interrupted(study_stopped_by);
+  }
 
   // Rank 0 gathers the outcomes of the others' cases.
   nlohmann::json mine_json = nlohmann::json::object();

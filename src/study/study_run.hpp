@@ -5,8 +5,9 @@
 // folder is committed atomically, so a case cut off leaves none and is redone). To start over,
 // the caller removes cases/ first (`--restart`). On Ctrl-C or SIGTERM no case starts, the
 // running ones stop and Interrupted is thrown (no outcomes, no results): the finished cases
-// stay for a rerun. Under MPI a failure with fail_fast on any rank stops the cases every rank
-// has not started yet.
+// stay for a rerun. Under MPI a signal on any rank stops the study on every rank (they agree
+// before the gather), and a failure with fail_fast on any rank stops the cases every rank has
+// not started yet.
 #include <cstddef>
 #include <filesystem>
 #include <optional>
