@@ -190,6 +190,35 @@ TEST(InterruptedRun, SigtermStopsAStudyOfTyreCasesInTheirStepLoop) {
   EXPECT_FALSE(fs::exists(ws.path("s/results.csv")));
 }
 
+// A cheap plate-tyre run (0.01 s of rolling) whose sound is looped to a 300 s WAV: its sound
+// report (band levels, LAeq, LAFmax of 1.4e7 samples) and the WAV take about two seconds after
+// the rolling's half second. SIGINT once the report has begun (spectrum.csv is in the staging
+// folder): before the fix the band filters, the weighting filters and the WAV writer polled
+// nothing, and the watchdog ended the run with the staging folder left behind.
+TEST(InterruptedRun, SigintStopsSimulateInItsLongSoundOutputAndRemovesItsStagingFolder) {
+  Workspace ws;
+  write_earlier_output(ws);
+  const std::string tyre = (source_dir / "models/tyres/passenger_205_55R16.toml").string();
+  ws.write("case.toml", "[tyre]\nfile = \"" + tyre +
+                            "\"\n[road]\ntype = \"flat\"\n[rolling]\nspeed = 22.222\nduration = 0.01\n"
+                            "static_load = 3200.0\npoints_lateral = 6\ncontact_window = 0.15\nband_top = 1000\n"
+                            "[radiation]\nreceivers = [\"cpx_front\"]\nmesh_around = 32\nmesh_across = 2\n"
+                            "sidewall_rings = 4\nanchor_spacing = 500\ncontact_refinement = 3\n"
+                            "[output]\nplots = false\nwav = true\nwav_duration = 300\n");
+  const pid_t pid = start_rollnoise(ws, {"simulate", "case.toml", "--out", "result", "--no-cache"});
+  ASSERT_GT(pid, 0);
+  const fs::path staging = ws.work() / (".result.partial-" + std::to_string(pid));
+  ASSERT_TRUE(wait_until([&] { return fs::exists(staging / "spectrum.csv"); }, 60s))
+      << "never got to its sound report; stderr: " << stderr_of(ws);
+  std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(still_running(pid)) << "the run ended before the signal; make the WAV longer";
+  const StoppedRun r = stop_with(ws, pid, SIGINT);
+  expect_clean_stop(r, SIGINT);
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+}
+
 // Ctrl-C of a study under `mpirun -n 2`: mpirun (OpenMPI 4) turns the SIGINT into SIGTERM to
 // every rank a second later, and SIGKILL a second after that. Case i runs on rank i mod 2: rank
 // 1 finishes both its short cases and waits for rank 0, which is in its third case (2 s of
