@@ -32,7 +32,7 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
   cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
   add_cache_options(*cmd, options.cache, options.no_cache);
-  cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails");
+  cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails (on any MPI rank)");
   cmd->add_flag("--restart", options.restart, "Run every case again, also those an earlier run finished");
   cmd->add_flag("--yes", options.yes,
                 "Run a study of more than " + std::to_string(kStudyCasesWithoutYes) + " cases");
