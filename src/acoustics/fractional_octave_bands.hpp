@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "acoustics/welch_psd.hpp"
+#include "core/cancellation.hpp"
 
 namespace rollnoise {
 
@@ -106,8 +107,9 @@ class FractionalOctaveFilterBank {
 
   // The mean square of every band's output over the samples [skip, signal.size()) (skip: the
   // start-up transient to leave out; the filters run over it). skip >= signal.size() is an
-  // InputError with key "settle_time".
-  std::vector<double> band_mean_squares(std::span<const double> signal, std::size_t skip = 0) const;
+  // InputError with key "settle_time". `cancel` is polled every 65536 samples (Interrupted).
+  std::vector<double> band_mean_squares(std::span<const double> signal, std::size_t skip = 0,
+                                        const CancellationToken& cancel = {}) const;
 
  private:
   struct Section {

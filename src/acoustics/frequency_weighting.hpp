@@ -51,6 +51,8 @@
 #include <string>
 #include <vector>
 
+#include "core/cancellation.hpp"
+
 namespace rollnoise {
 
 enum class FrequencyWeighting { A, C, Z };
@@ -91,8 +93,9 @@ class WeightingFilter {
   // |response| in dB.
   double response_db(double frequency) const;
 
-  // The weighted signal, the filter starting from rest.
-  std::vector<double> apply(std::span<const double> signal) const;
+  // The weighted signal, the filter starting from rest. `cancel` is polled every 65536 samples
+  // of each section (Interrupted).
+  std::vector<double> apply(std::span<const double> signal, const CancellationToken& cancel = {}) const;
 
  private:
   // One second-order section b(z)/a(z), a0 = 1.

@@ -66,9 +66,15 @@ std::vector<double> time_weighted_levels_db(std::span<const double> pressure, do
   const double one_minus_a = -std::expm1(-1.0 / (sample_rate * time_constant));
   const double a = 1.0 - one_minus_a;
   double y = 0.0;
-  for (double& v : levels) {
-    y = a * y + one_minus_a * v * v;
-    v = sound_pressure_level_db(y);
+  const CancellationToken cancel;
+  constexpr std::size_t block = std::size_t{1} << 16;  // a Ctrl-C poll per block (a logarithm a sample)
+  for (std::size_t start = 0; start < levels.size(); start += block) {
+    cancel.throw_if_cancelled();
+    const std::size_t end = std::min(levels.size(), start + block);
+    for (std::size_t n = start; n < end; ++n) {
+      y = a * y + one_minus_a * levels[n] * levels[n];
+      levels[n] = sound_pressure_level_db(y);
+    }
   }
   return levels;
 }
@@ -102,7 +108,7 @@ BandSpectrum band_spectrum(std::span<const double> pressure, double sample_rate,
                                               " s record to average");
     }
     const FractionalOctaveFilterBank bank(bands, sample_rate, options.filter_order);
-    mean_squares = bank.band_mean_squares(pressure, static_cast<std::size_t>(skip_samples));
+    mean_squares = bank.band_mean_squares(pressure, static_cast<std::size_t>(skip_samples), options.cancel);
   } else {
     std::size_t n = options.welch_segment_length;
     if (n == 0) {

@@ -47,7 +47,8 @@ double weighted_leq_db(std::span<const double> pressure, double sample_rate, Fre
 double laeq_db(std::span<const double> pressure, double sample_rate);
 
 // L_Wτ(t_n) at every sample (dB), weighting then exponential time weighting from rest.
-// time_constant: s, finite, > 0 (InputError, key "time_constant").
+// time_constant: s, finite, > 0 (InputError, key "time_constant"). Polls Ctrl-C (the default
+// CancellationToken) as it goes, like the weighting's filter.
 std::vector<double> time_weighted_levels_db(std::span<const double> pressure, double sample_rate,
                                             FrequencyWeighting weighting, double time_constant);
 // The maximum of time_weighted_levels_db.
@@ -73,6 +74,8 @@ struct BandSpectrumOptions {
   // Samples per Welch segment (even); 0: the smallest power of two whose resolution fs/N is at
   // most a tenth of the lowest band's width (welch).
   std::size_t welch_segment_length = 0;
+  // Polled as the band filters run (filter_bank): Interrupted when cancelled.
+  CancellationToken cancel;
 };
 
 struct BandSpectrum {

@@ -127,6 +127,7 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
   const auto n_out = static_cast<Eigen::Index>(std::llround(settings.duration * sample_rate));
   Eigen::VectorXd out(n_out);
   for (Eigen::Index n = 0; n < n_out; ++n) {
+    if (n % 65536 == 0) settings.cancel.throw_if_cancelled();  // an hour's pass-by is 1.7e8 samples
     const double tau = static_cast<double>(n) / sample_rate - half;
     double p = 0.0;
     for (int k = 0; k < path_count; ++k) {

@@ -25,6 +25,8 @@
 // as they do at a real SPB microphone.
 #include <Eigen/Core>
 
+#include "core/cancellation.hpp"
+
 namespace rollnoise {
 
 struct PassBySettings {
@@ -35,6 +37,7 @@ struct PassBySettings {
   double duration = 5.0;           // s: length of the output; the closest approach is at its middle
   double sound_speed = 343.2;      // m/s
   double ground_reflection = 1.0;  // pressure reflection coefficient of the road, 0..1 (1: rigid)
+  CancellationToken cancel;        // polled every 65536 output samples (Interrupted)
 };
 
 // The pressure (Pa) at the receiver as the tyre drives past, sampled at `sample_rate` (Hz),

@@ -18,8 +18,13 @@ struct SrcDeleter {
 
 constexpr double max_stage_ratio = 256.0;  // libsamplerate's limit (SRC_MAX_RATIO)
 
+// Output frames per call of the converter: a Ctrl-C poll between calls. The sinc converter
+// keeps its position as the fraction of an input sample between its outputs, so output made in
+// pieces is the output made at once, sample for sample (ResamplerTest checks this).
+constexpr long frames_per_call = 1L << 16;
+
 // One libsamplerate pass; returns round(n · ratio) samples.
-std::vector<float> convert(const std::vector<float>& input, double ratio) {
+std::vector<float> convert(const std::vector<float>& input, double ratio, const CancellationToken& cancel) {
   const auto n_out =
       static_cast<std::size_t>(std::llround(static_cast<double>(input.size()) * ratio));
   int error = 0;
@@ -32,19 +37,21 @@ std::vector<float> convert(const std::vector<float>& input, double ratio) {
   data.data_in = input.data();
   data.input_frames = static_cast<long>(input.size());
   data.data_out = output.data();
-  data.output_frames = static_cast<long>(output.size());
   data.src_ratio = ratio;
   data.end_of_input = 1;
+  long room = static_cast<long>(output.size());
   std::size_t produced = 0;
   for (;;) {
+    cancel.throw_if_cancelled();
+    data.output_frames = std::min(room, frames_per_call);
     error = src_process(state.get(), &data);
     if (error != 0) throw std::runtime_error(std::string("libsamplerate: ") + src_strerror(error));
     produced += static_cast<std::size_t>(data.output_frames_gen);
     data.data_in += data.input_frames_used;
     data.input_frames -= data.input_frames_used;
     data.data_out += data.output_frames_gen;
-    data.output_frames -= data.output_frames_gen;
-    if (data.output_frames_gen == 0 || data.output_frames == 0 || produced >= n_out) break;
+    room -= data.output_frames_gen;
+    if (data.output_frames_gen == 0 || room == 0 || produced >= n_out) break;
   }
   output.resize(n_out, 0.0F);  // pads with zeros in the (theoretical) case of a short output
   return output;
@@ -52,7 +59,7 @@ std::vector<float> convert(const std::vector<float>& input, double ratio) {
 
 }  // namespace
 
-Eigen::VectorXd resample(const Eigen::VectorXd& signal, double fs_in, double fs_out) {
+Eigen::VectorXd resample(const Eigen::VectorXd& signal, double fs_in, double fs_out, const CancellationToken& cancel) {
   if (!(fs_in > 0.0) || !(fs_out > 0.0) || !std::isfinite(fs_in) || !std::isfinite(fs_out))
     throw std::invalid_argument("resample: sample rates must be positive and finite");
   if (fs_in == fs_out || signal.size() == 0) return signal;
@@ -74,7 +81,7 @@ Eigen::VectorXd resample(const Eigen::VectorXd& signal, double fs_in, double fs_
     data[static_cast<std::size_t>(i)] = static_cast<float>(signal[i]);
   // Every stage at the exact ratio (sample k of a stage is at time k / its rate); the length
   // is set once at the end.
-  for (int s = 0; s < stages; ++s) data = convert(data, stage_ratio);
+  for (int s = 0; s < stages; ++s) data = convert(data, stage_ratio, cancel);
   data.resize(n_out, 0.0F);
 
   Eigen::VectorXd out(static_cast<Eigen::Index>(n_out));

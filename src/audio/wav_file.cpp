@@ -86,6 +86,7 @@ WavWriteReport write_wav(const std::filesystem::path& path,
   WavWriteReport report;
   for (const auto& channel : channels_pa) {
     for (Eigen::Index i = 0; i < frames; ++i) {
+      if (i % block_frames == 0) options.cancel.throw_if_cancelled();
       const double sample = channel[i] / full_scale;
       if (!std::isfinite(sample) || std::abs(sample) > 3.0e38)
         throw fail("sample " + std::to_string(i) + " is not a finite number");
@@ -118,6 +119,7 @@ WavWriteReport write_wav(const std::filesystem::path& path,
 
     std::vector<float> buffer(static_cast<std::size_t>(block_frames) * channels_pa.size());
     for (Eigen::Index start = 0; start < frames; start += block_frames) {
+      options.cancel.throw_if_cancelled();
       const Eigen::Index count = std::min<Eigen::Index>(block_frames, frames - start);
       for (Eigen::Index i = 0; i < count; ++i)
         for (std::size_t c = 0; c < channels_pa.size(); ++c)

@@ -22,6 +22,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/cancellation.hpp"
+
 namespace rollnoise {
 
 enum class WavClipping {
@@ -33,6 +35,9 @@ struct WavWriteOptions {
   double full_scale_pa = 1.0;  // pressure in Pa of sample value 1.0; positive, finite
   WavClipping clipping = WavClipping::refuse;
   std::string title;  // optional SF_STR_TITLE, such as the receiver name
+  // Polled every block of samples (an hour of sound is 170 million): when cancelled, write_wav
+  // throws Interrupted and removes the file it had started.
+  CancellationToken cancel;
 };
 
 struct WavWriteReport {
@@ -42,7 +47,8 @@ struct WavWriteReport {
 
 // Writes one file with one channel per vector (all of the same length) of pressures in Pa.
 // `sample_rate` in Hz must be a positive whole number. Writes to `path` directly (callers
-// stage directories for atomic output). Errors: std::runtime_error naming the file.
+// stage directories for atomic output). Errors: std::runtime_error naming the file;
+// Interrupted on options.cancel (no file left either way).
 WavWriteReport write_wav(const std::filesystem::path& path,
                          const std::vector<Eigen::VectorXd>& channels_pa, double sample_rate,
                          const WavWriteOptions& options);

@@ -277,7 +277,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   sound.radiation.sample_rate_hz = 1.0 / dt;
   sound.cache_folder = options.cache;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
-                                      settings.static_load, {}, {}, belt_psd.get()};
+                                      settings.static_load, {}, {}, belt_psd.get(), {}};
   if (sound.enabled) {
     // The belt onto the radiation's input mesh (the finest of its bands' meshes,
     // tyre_radiation.hpp), the tyre deformed as it rolls (deform_radiating_body).

@@ -219,7 +219,12 @@ void TyreStepOutputs::body_known() {
   sampling_ = settings_.tread_sampling(RadiatingPatch{lengths.mean(), widths.mean(), indentation_});
   if (sampling_.rows() == 0) throw std::logic_error("TyreStepOutputs: an empty tread sampling");
   tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
-  for (Eigen::Index n = 0; n < patch_forces_.cols(); ++n) respond(static_cast<std::size_t>(n), patch_forces_.col(n));
+  // Up to 4096 waiting steps at once, seconds of work on a fine grid: polled like the step
+  // loop, so that Ctrl-C here does not wait for the watchdog.
+  for (Eigen::Index n = 0; n < patch_forces_.cols(); ++n) {
+    settings_.cancel.throw_if_cancelled();
+    respond(static_cast<std::size_t>(n), patch_forces_.col(n));
+  }
   patch_forces_.resize(0, 0);
 }
 

@@ -30,6 +30,7 @@
 #include "contact/rolling_modes.hpp"
 #include "contact/rolling_tyre.hpp"
 #include "contact/texture_under_contact.hpp"
+#include "core/cancellation.hpp"
 #include "core/hdf5_writer.hpp"
 
 namespace rollnoise {
@@ -72,6 +73,7 @@ struct TyreStepOutputSettings {
   // (all of them up to 4096: tyre_step_outputs.cpp). Empty: no radiating velocity kept.
   std::function<Eigen::SparseMatrix<double>(const RadiatingPatch&)> tread_sampling;
   PointAveragedPsd* belt_psd = nullptr;  // receives every step's belt velocity (index j + Ny·g)
+  CancellationToken cancel;              // Ctrl-C (polled where the waiting steps catch up)
 };
 
 class TyreStepOutputs final : public ContactStepSink {

@@ -40,7 +40,7 @@ MpiSession::MpiSession() {
 
 MpiSession::~MpiSession() {
 #ifdef ROLLNOISE_HAVE_MPI
-  if (active_) MPI_Finalize();
+  if (active_ && finalize_) MPI_Finalize();
 #endif
 }
 
@@ -48,6 +48,17 @@ void MpiSession::barrier() const {
 #ifdef ROLLNOISE_HAVE_MPI
   if (active_) MPI_Barrier(MPI_COMM_WORLD);
 #endif
+}
+
+int MpiSession::max_over_ranks(int value) const {
+#ifdef ROLLNOISE_HAVE_MPI
+  if (active_) {
+    int largest = value;
+    MPI_Allreduce(&value, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return largest;
+  }
+#endif
+  return value;
 }
 
 std::vector<std::string> MpiSession::gather(const std::string& text) const {

@@ -21,11 +21,18 @@ class MpiSession {
   static bool built_with_mpi() noexcept;
 
   void barrier() const;
+  // The largest of every rank's `value`, on every rank (each rank must call it).
+  int max_over_ranks(int value) const;
   // Every rank's `text`, on rank 0 (in rank order); empty on the others.
   std::vector<std::string> gather(const std::string& text) const;
+  // Leave MPI without MPI_Finalize at the end, for a run stopped by a signal: mpirun turns a
+  // Ctrl-C into SIGTERM to every rank and tears the job down, and MPI_Finalize's handshake with
+  // it then never completes (the rank would hang until mpirun's SIGKILL a second later).
+  void leave_without_finalize() noexcept { finalize_ = false; }
 
  private:
   bool active_ = false;
+  bool finalize_ = true;
   int rank_ = 0;
   int size_ = 1;
 };

@@ -62,6 +62,44 @@ class StudyProgress {
   std::chrono::steady_clock::time_point start_;
 };
 
+// --fail-fast over the ranks: the first failure on any rank leaves a marker file in the study's
+// cases/ folder (which the ranks share already), and every rank looks for it before it starts a
+// case, so a failure on one rank stops the cases not yet started on all of them; cases running
+// elsewhere finish. A file rather than an MPI message: the failures happen in the case threads
+// while only the main thread may call MPI (MPI_THREAD_FUNNELED), and a file leaves no message to
+// match or drain before the gather. Hidden, so a study cut off leaves it where the next run's
+// start removes it with the other hidden leftovers of cases/.
+class FailFastFlag {
+ public:
+  FailFastFlag(fs::path marker, bool shared) : marker_(std::move(marker)), shared_(shared) {}
+
+  void raise() {
+    raised_ = true;
+    if (!shared_) return;
+    std::ofstream out(marker_);
+    out << "a case failed with --fail-fast\n";
+    out.close();
+    if (!out)
+      std::fprintf(stderr, "rollnoise: warning: cannot write %s: the other ranks go on with their cases\n",
+                   marker_.string().c_str());
+  }
+  bool raised() const {
+    if (raised_) return true;
+    std::error_code ec;
+    return shared_ && fs::exists(marker_, ec);
+  }
+  // Once no rank looks any more (after every rank's cases).
+  void clear() const {
+    std::error_code ec;
+    fs::remove(marker_, ec);
+  }
+
+ private:
+  fs::path marker_;
+  bool shared_;
+  std::atomic<bool> raised_{false};
+};
+
 }  // namespace
 
 fs::path case_folder(const fs::path& out, const StudyCase& c) { return out / "cases" / c.id; }
@@ -82,21 +120,21 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
 
   std::vector<CaseOutcome> outcomes(cases.size());
   std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
+  FailFastFlag stop(options.out / "cases" / ".fail-fast", mpi.size() > 1);
   std::mutex mutex;
   // Ctrl-C or SIGTERM (core/cancellation.hpp): no case starts after it, the running ones stop
   // at their next poll (their staging folders go), the finished ones stay for a rerun, and
   // the Interrupted is rethrown once every worker is back, so that main() exits 130/143
   // rather than counting the stopped cases as failed ones.
   const CancellationToken cancel;
-  std::exception_ptr interrupted;
+  int interrupted_by = 0;  // the signal that stopped this rank's cases
   std::size_t done = 0, run = 0, failed = 0;
   StudyProgress progress(spec.name, mine.size(), options.progress && mpi.size() == 1);
   const auto work = [&] {
     for (std::size_t i = next++; i < mine.size(); i = next++) {
       const StudyCase& c = cases[mine[i]];
       CaseOutcome& outcome = outcomes[c.index];
-      if (stop) {
+      if (options.fail_fast && stop.raised()) {
         outcome.status = "not run";
         outcome.message = "an earlier case failed (--fail-fast)";
         continue;
@@ -118,9 +156,9 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
           run_case(study_case_file(spec, table), folder, run_options);
           outcome.status = "ok";
         }
-      } catch (const Interrupted&) {
+      } catch (const Interrupted& stopped) {
         const std::lock_guard lock(mutex);
-        if (!interrupted) interrupted = std::current_exception();
+        if (!interrupted_by) interrupted_by = stopped.signal_number();
         next = mine.size();
         return;
       } catch (const InputError& error) {
@@ -136,7 +174,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
       if (!outcome.reused) ++run;
       if (outcome.status == "failed") {
         ++failed;
-        if (options.fail_fast) stop = true;
+        if (options.fail_fast) stop.raise();
         std::fprintf(stderr, "%srollnoise: case %s failed: %s\n", ProgressReporter::wanted() ? "\r" : "", c.id.c_str(),
                      outcome.message.c_str());
       }
@@ -148,9 +186,23 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
     for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }
-  if (interrupted) std::rethrow_exception(interrupted);
   // A signal after the last case: the results are not written either (the finished cases are).
-  cancel.throw_if_cancelled();
+  if (!interrupted_by) {
+    try {
+      cancel.throw_if_cancelled();
+    } catch (const Interrupted& stopped) {
+      interrupted_by = stopped.signal_number();
+    }
+  }
+  // Every rank gets here, stopped or not, before the gather: a rank that threw at once would
+  // leave the others waiting in the gather (and then in MPI_Finalize) until the watchdog ended
+  // them. If any rank was stopped, the whole study is (under mpirun every rank gets the
+  // signal, but not at the same point of its work).
+  const int study_stopped_by = mpi.max_over_ranks(interrupted_by);
+  if (study_stopped_by) {
+    if (mpi.rank() == 0) stop.clear();
+    throw Interrupted(study_stopped_by);
+  }
 
   // Rank 0 gathers the outcomes of the others' cases.
   nlohmann::json mine_json = nlohmann::json::object();
@@ -160,6 +212,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
                                     {"reused", outcomes[i].reused},
                                     {"wall_time_s", outcomes[i].wall_time_s}};
   const std::vector<std::string> gathered = mpi.gather(mine_json.dump());
+  if (mpi.rank() == 0) stop.clear();  // every rank is past its cases: none looks for it any more
   if (mpi.rank() != 0) return {};
   for (const std::string& text : gathered) {
     const nlohmann::json rank_outcomes = nlohmann::json::parse(text);  // kept: items() refers to it

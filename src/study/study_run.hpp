@@ -5,7 +5,9 @@
 // folder is committed atomically, so a case cut off leaves none and is redone). To start over,
 // the caller removes cases/ first (`--restart`). On Ctrl-C or SIGTERM no case starts, the
 // running ones stop and Interrupted is thrown (no outcomes, no results): the finished cases
-// stay for a rerun.
+// stay for a rerun. Under MPI a signal on any rank stops the study on every rank (they agree
+// before the gather), and a failure with fail_fast on any rank stops the cases every rank has
+// not started yet.
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -23,7 +25,7 @@ class MpiSession;
 struct StudyRunOptions {
   std::filesystem::path out;  // the study's folder
   int threads = 0;            // cases side by side on this rank; 0: one per core (one under mpirun)
-  bool fail_fast = false;     // stop starting cases after the first failure
+  bool fail_fast = false;     // stop starting cases after the first failure (on any rank)
   bool progress = true;       // cases done, with an ETA, on a terminal (not in CI)
   // The cache folder the cases share (CaseRunOptions::cache); std::nullopt: none.
   std::optional<std::filesystem::path> cache = default_cache_directory();

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <csignal>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +18,7 @@
 
 #include "acoustics/frequency_weighting.hpp"
 #include "acoustics/sound_levels.hpp"
+#include "core/cancellation.hpp"
 #include "core/error.hpp"
 #include "core/fftw_plan.hpp"
 
@@ -284,6 +287,24 @@ TEST(SoundLevels, BandSpectrumRejectsBadOptions) {
   options.f_high = 20000.0;
   EXPECT_THROW(band_spectrum(x, 32000.0, options), InputError);
   EXPECT_THROW(band_spectrum(std::vector<double>{}, fs, BandSpectrumOptions{}), InputError);
+}
+
+// The band filters and the weighting filter poll a CancellationToken as they go (long sound
+// output under Ctrl-C): a cancelled token (the test's own flag, set before the call: no timing)
+// throws Interrupted; one that is not cancelled gives the levels of the default token.
+TEST(SoundLevels, BandAndWeightingFiltersStopWhenCancelled) {
+  const std::vector<double> x = tone(1.0, 1000.0, 3 * 48000);
+  std::atomic<int> flag{0};
+  BandSpectrumOptions options;
+  options.settle_time = 0.5;
+  const BandSpectrum expected = band_spectrum(x, fs, options);
+  options.cancel = CancellationToken(flag);
+  EXPECT_EQ(band_spectrum(x, fs, options).lp_db, expected.lp_db);
+  const WeightingFilter a(FrequencyWeighting::A, fs);
+  EXPECT_EQ(a.apply(x, CancellationToken(flag)), a.apply(x));
+  flag = SIGTERM;
+  EXPECT_THROW(band_spectrum(x, fs, options), Interrupted);
+  EXPECT_THROW(a.apply(x, CancellationToken(flag)), Interrupted);
 }
 
 }  // namespace

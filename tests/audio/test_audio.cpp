@@ -2,7 +2,11 @@
 // resampling (level within 0.05 dB, frequency kept, exact length, no time shift) and seamless
 // looping (no jump at the joints, level within 0.1 dB).
 #include <gtest/gtest.h>
+#include <samplerate.h>
 #include <sndfile.h>
+
+#include <atomic>
+#include <csignal>
 
 #include <cmath>
 #include <cstdio>
@@ -277,6 +281,58 @@ TEST(Resampler, LargeRatiosGoInStages) {
   std::printf("  25.6 MHz -> 48 kHz (2 stages): max deviation from the ideal sine %.2e\n",
               max_error);
   EXPECT_LT(max_error, 2e-3);
+}
+
+// Resampling polls Ctrl-C between pieces of output; made in pieces, the output is the output of
+// libsamplerate's one-call src_simple, bit for bit (a long noise at 12 kHz -> 48 kHz, which
+// takes several pieces, and 25.6 MHz -> 48 kHz per stage).
+TEST(Resampler, OutputInPiecesIsTheOneCallOutputBitForBit) {
+  std::mt19937 rng(7);
+  std::normal_distribution<float> noise(0.0F, 1.0F);
+  std::vector<float> input(100000);
+  for (float& v : input) v = noise(rng);
+  Eigen::VectorXd x(static_cast<Eigen::Index>(input.size()));
+  for (std::size_t i = 0; i < input.size(); ++i) x[static_cast<Eigen::Index>(i)] = input[i];
+  const Eigen::VectorXd y = resample(x, 12000.0, 48000.0);
+  ASSERT_EQ(y.size(), 400000);
+
+  std::vector<float> once(static_cast<std::size_t>(y.size()) + 1024);
+  SRC_DATA data{};
+  data.data_in = input.data();
+  data.input_frames = static_cast<long>(input.size());
+  data.data_out = once.data();
+  data.output_frames = static_cast<long>(once.size());
+  data.src_ratio = 4.0;
+  ASSERT_EQ(src_simple(&data, SRC_SINC_BEST_QUALITY, 1), 0);
+  ASSERT_GE(data.output_frames_gen, y.size());
+  Eigen::Index differing = 0;
+  for (Eigen::Index i = 0; i < y.size(); ++i) differing += y[i] != static_cast<double>(once[static_cast<std::size_t>(i)]);
+  EXPECT_EQ(differing, 0) << "samples that differ from the one-call conversion";
+}
+
+// A cancelled token: resample and write_wav throw Interrupted, and write_wav leaves no file.
+// (The flag is the test's own, set before the call: no timing involved.)
+TEST(Wav, WritingAndResamplingStopWhenCancelled) {
+  TempDir dir;
+  std::atomic<int> flag{0};
+  const CancellationToken token(flag);
+  const Eigen::VectorXd x = sine(1000.0, 1.0, 48000.0, 48000 * 3);
+  WavWriteOptions options;
+  options.full_scale_pa = 2.0;
+  options.cancel = token;
+  write_wav(dir / "ok.wav", x, 48000.0, options);  // not cancelled: written
+  EXPECT_TRUE(fs::is_regular_file(dir / "ok.wav"));
+  EXPECT_EQ(resample(x, 48000.0, 44100.0, token).size(), 44100 * 3);
+
+  flag = SIGINT;
+  try {
+    write_wav(dir / "stopped.wav", x, 48000.0, options);
+    ADD_FAILURE() << "write_wav did not poll the token";
+  } catch (const Interrupted& stopped) {
+    EXPECT_EQ(stopped.exit_status(), 130);
+  }
+  EXPECT_FALSE(fs::exists(dir / "stopped.wav")) << "a partial WAV file is left";
+  EXPECT_THROW(resample(x, 48000.0, 44100.0, token), Interrupted);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <csignal>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -373,6 +375,21 @@ TEST(PassBy, BadArgumentsThrowNamingTheParameter) {
                             s.speed = 0.2999 * s.sound_speed;
                           })));
   EXPECT_NO_THROW(pass_by(x, fs, with([](PassBySettings& s) { s.ground_reflection = 1.0; })));
+}
+
+// A cancelled token (the test's own flag, set before the call: no timing) stops the pass-by
+// with Interrupted; one not cancelled changes nothing.
+TEST(PassBy, StopsWhenCancelled) {
+  std::atomic<int> flag{0};
+  PassBySettings s;
+  s.speed = 30.0;
+  s.duration = 2.0;
+  const Eigen::VectorXd source = tone(1000.0, 1.0, 0.7);
+  const Eigen::VectorXd expected = pass_by(source, fs, s);
+  s.cancel = CancellationToken(flag);
+  EXPECT_EQ(pass_by(source, fs, s), expected);
+  flag = SIGINT;
+  EXPECT_THROW(pass_by(source, fs, s), Interrupted);
 }
 
 }  // namespace

@@ -17,8 +17,10 @@
 
 namespace cli_test {
 
-// Starts `rollnoise args...` in ws.work(); stdout and stderr go to files beside work().
-inline pid_t start_rollnoise(const Workspace& ws, const std::vector<std::string>& args) {
+// Starts `launcher... rollnoise args...` in ws.work() (the launcher, such as mpirun with its
+// options, may be empty); stdout and stderr go to files beside work().
+inline pid_t start_rollnoise(const Workspace& ws, const std::vector<std::string>& args,
+                             const std::vector<std::string>& launcher = {}) {
   const fs::path out = ws.work().parent_path() / "stdout.txt";
   const fs::path err = ws.work().parent_path() / "stderr.txt";
   const pid_t pid = ::fork();
@@ -27,13 +29,13 @@ inline pid_t start_rollnoise(const Workspace& ws, const std::vector<std::string>
     if (!std::freopen("/dev/null", "r", stdin) || !std::freopen(out.c_str(), "w", stdout) ||
         !std::freopen(err.c_str(), "w", stderr))
       ::_exit(127);
+    std::vector<std::string> copies(launcher);
+    copies.push_back(ROLLNOISE_BINARY);
+    copies.insert(copies.end(), args.begin(), args.end());
     std::vector<char*> argv;
-    std::string binary = ROLLNOISE_BINARY;
-    argv.push_back(binary.data());
-    std::vector<std::string> copies(args);
     for (std::string& a : copies) argv.push_back(a.data());
     argv.push_back(nullptr);
-    ::execv(binary.c_str(), argv.data());
+    ::execv(copies.front().c_str(), argv.data());
     ::_exit(127);
   }
   return pid;

@@ -190,4 +190,109 @@ TEST(InterruptedRun, SigtermStopsAStudyOfTyreCasesInTheirStepLoop) {
   EXPECT_FALSE(fs::exists(ws.path("s/results.csv")));
 }
 
+// A cheap plate-tyre run (0.01 s of rolling) whose sound is looped to a 300 s WAV: its sound
+// report (band levels, LAeq, LAFmax of 1.4e7 samples) and the WAV take about two seconds after
+// the rolling's half second. SIGINT once the report has begun (spectrum.csv is in the staging
+// folder): before the fix the band filters, the weighting filters and the WAV writer polled
+// nothing, and the watchdog ended the run with the staging folder left behind.
+TEST(InterruptedRun, SigintStopsSimulateInItsLongSoundOutputAndRemovesItsStagingFolder) {
+  Workspace ws;
+  write_earlier_output(ws);
+  const std::string tyre = (source_dir / "models/tyres/passenger_205_55R16.toml").string();
+  ws.write("case.toml", "[tyre]\nfile = \"" + tyre +
+                            "\"\n[road]\ntype = \"flat\"\n[rolling]\nspeed = 22.222\nduration = 0.01\n"
+                            "static_load = 3200.0\npoints_lateral = 6\ncontact_window = 0.15\nband_top = 1000\n"
+                            "[radiation]\nreceivers = [\"cpx_front\"]\nmesh_around = 32\nmesh_across = 2\n"
+                            "sidewall_rings = 4\nanchor_spacing = 500\ncontact_refinement = 3\n"
+                            "[output]\nplots = false\nwav = true\nwav_duration = 300\n");
+  const pid_t pid = start_rollnoise(ws, {"simulate", "case.toml", "--out", "result", "--no-cache"});
+  ASSERT_GT(pid, 0);
+  const fs::path staging = ws.work() / (".result.partial-" + std::to_string(pid));
+  ASSERT_TRUE(wait_until([&] { return fs::exists(staging / "spectrum.csv"); }, 60s))
+      << "never got to its sound report; stderr: " << stderr_of(ws);
+  std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(still_running(pid)) << "the run ended before the signal; make the WAV longer";
+  const StoppedRun r = stop_with(ws, pid, SIGINT);
+  expect_clean_stop(r, SIGINT);
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+}
+
+// Ctrl-C of a study under `mpirun -n 2`: mpirun (OpenMPI 4) turns the SIGINT into SIGTERM to
+// every rank a second later, and SIGKILL a second after that. Case i runs on rank i mod 2: rank
+// 1 finishes both its short cases and waits for rank 0, which is in its third case (2 s of
+// rolling, several seconds of work). Before the fix the stopped rank 0 threw past the gather
+// that rank 1 waited in, and both then hung in MPI_Finalize (mpirun was tearing the job down)
+// until the watchdog ended them ("stopped at once", a line per rank). Now the ranks agree that
+// the study was stopped and leave without MPI_Finalize: the finished cases stay, the running
+// case's staging folder goes, no results are written, one line from rank 0, mpirun's exit
+// status is non-zero, and a rerun redoes only the stopped case.
+TEST(InterruptedRun, SigintToMpirunStopsTheStudyOnEveryRankAndKeepsItsFinishedCases) {
+#if ROLLNOISE_TEST_MPI
+  Workspace ws;
+  const std::string tyre = (source_dir / "models/tyres/passenger_205_55R16.toml").string();
+  ws.write("base.toml", "[tyre]\nfile = \"" + tyre +
+                            "\"\n[road]\ntype = \"flat\"\n[rolling]\nspeed = 22.222\nduration = 0.01\n"
+                            "static_load = 3200.0\npoints_lateral = 6\ncontact_window = 0.15\nband_top = 1000\n"
+                            "[radiation]\nreceivers = [\"cpx_front\"]\nmesh_around = 32\nmesh_across = 2\n"
+                            "sidewall_rings = 4\nanchor_spacing = 500\ncontact_refinement = 3\n"
+                            "[output]\nplots = false\nwav = false\n");
+  const auto study = [&](const std::string& long_duration) {
+    ws.write("study.toml", "[study]\nname = \"tyres\"\ncase = \"base.toml\"\n[vary]\nrolling.duration = [0.01, 0.011, " +
+                               long_duration + ", 0.012]\n");
+  };
+  study("2.0");
+  const fs::path cases = ws.path("s") / "cases";
+  const auto folders = [&](bool hidden) {
+    std::vector<fs::path> found;
+    std::error_code ec;
+    for (fs::directory_iterator it(cases, ec), end; !ec && it != end; it.increment(ec))
+      if ((it->path().filename().string()[0] == '.') == hidden) found.push_back(it->path());
+    return found;
+  };
+  // As root OpenMPI needs its allow-run-as-root settings; --oversubscribe for 2 ranks anywhere.
+  const std::vector<std::string> mpirun = {"/usr/bin/env", "OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+                                           MPIEXEC_EXECUTABLE, "-n", "2", "--oversubscribe"};
+  const pid_t pid = start_rollnoise(ws, {"study", "study.toml", "--out", "s"}, mpirun);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(wait_until([&] { return folders(false).size() == 3 && folders(true).size() == 1; }, 120s))
+      << "the study never got to its long case; stderr: " << stderr_of(ws);
+  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(still_running(pid)) << "the long case ended before the signal; stderr: " << stderr_of(ws);
+  const StoppedRun r = stop_with(ws, pid, SIGINT);
+  ASSERT_TRUE(r.exited) << "mpirun killed by signal " << r.status << "; stderr: " << r.err;
+  EXPECT_NE(r.status, 0) << r.err;
+  // mpirun's own second before it passes the signal on, then the ranks' stop (the watchdog
+  // would end them 0.8 s after the signal, mpirun's SIGKILL a second after it).
+  EXPECT_LT(r.seconds, 3.0) << "took " << r.seconds << " s to stop";
+  EXPECT_TRUE(contains(r.err, "interrupted by SIG")) << r.err;
+  EXPECT_TRUE(contains(r.err, "the partial output was removed")) << "the watchdog ended it: " << r.err;
+  EXPECT_FALSE(contains(r.err, "stopped at once")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+
+  const std::vector<fs::path> kept = folders(false);
+  EXPECT_EQ(kept.size(), 3u) << "the finished cases are kept";
+  EXPECT_TRUE(folders(true).empty()) << "a staging folder is left: " << folders(true).front();
+  EXPECT_FALSE(fs::exists(cases / "duration-2")) << "the stopped case was committed";
+  EXPECT_FALSE(fs::exists(ws.path("s/results.csv")));
+  EXPECT_FALSE(fs::exists(ws.path("s/summary.json")));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+
+  // A rerun (the long case shortened) takes the three finished cases as they are.
+  std::vector<fs::file_time_type> written;
+  for (const fs::path& folder : kept) written.push_back(fs::last_write_time(folder / "summary.json"));
+  study("0.013");
+  std::string launcher;
+  for (const std::string& part : mpirun) launcher += part + " ";
+  const RunResult rerun = ws.run({"study", "study.toml", "--out", "s"}, launcher);
+  ASSERT_EQ(rerun.status, 0) << describe(rerun);
+  EXPECT_TRUE(contains(rerun.out, "4 cases, 4 ok (3 from an earlier run)")) << rerun.out;
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    EXPECT_EQ(fs::last_write_time(kept[i] / "summary.json"), written[i]) << kept[i] << " was redone";
+#else
+  GTEST_SKIP() << "built without MPI (ROLLNOISE_MPI=OFF)";
+#endif
+}
+
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "cache_command.hpp"
 #include "core/cache_folder.hpp"
+#include "core/cancellation.hpp"
 #include "core/error.hpp"
 #include "study/mpi_session.hpp"
 #include "study/study_cases.hpp"
@@ -31,7 +32,7 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
   cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
   add_cache_options(*cmd, options.cache, options.no_cache);
-  cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails");
+  cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails (on any MPI rank)");
   cmd->add_flag("--restart", options.restart, "Run every case again, also those an earlier run finished");
   cmd->add_flag("--yes", options.yes,
                 "Run a study of more than " + std::to_string(kStudyCasesWithoutYes) + " cases");
@@ -65,12 +66,26 @@ int run_study(const StudyOptions& options) {
   run.fail_fast = options.fail_fast;
   // Resolved once for the whole study, so that a folder that cannot be written is one warning.
   run.cache = usable_cache_folder(options.cache, options.no_cache);
-  const std::vector<CaseOutcome> outcomes = run_study_cases(spec, cases, run, mpi);
+  std::vector<CaseOutcome> outcomes;
+  try {
+    outcomes = run_study_cases(spec, cases, run, mpi);
+  } catch (const Interrupted& stopped) {
+    if (mpi.active()) mpi.leave_without_finalize();
+    // Every rank stops together (run_study_cases); rank 0 alone says so, as it alone reports
+    // the study, so that Ctrl-C under mpirun gives one line rather than one per rank.
+    if (mpi.rank() != 0) return stopped.exit_status();
+    throw;
+  }
   if (mpi.rank() != 0) return 0;
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const nlohmann::json summary =
-      write_study_results(out, spec, cases, outcomes, {{"ranks", mpi.size()}, {"wall_time_s", wall}}, true);
+  nlohmann::json summary;
+  try {
+    summary = write_study_results(out, spec, cases, outcomes, {{"ranks", mpi.size()}, {"wall_time_s", wall}}, true);
+  } catch (const Interrupted&) {
+    if (mpi.active()) mpi.leave_without_finalize();  // stopped while it plots: as above
+    throw;
+  }
   const auto& counts = summary["cases"];
   std::printf("rollnoise: wrote %s (results.csv, spectra.csv, summary.json, plots): %zu cases, %zu ok (%zu from an earlier run), %zu failed\n",
               out.string().c_str(), counts["total"].get<std::size_t>(), counts["ok"].get<std::size_t>(),
