@@ -47,8 +47,9 @@ double level_db(double mean_square, double reference);
 // that arrive one sample of all points at a time (a field over time: nothing but one segment of
 // it is kept). Each average a has weights w_a,p >= 0 (normalised to sum 1). Segments of N
 // samples start at 0, N/2, N, … exactly as welch_psd's, so average(a) equals Σ_p w_a,p ·
-// welch_psd(signal_p, fs, N) of the whole records (the periodogram is computed per segment with
-// welch_psd itself). Buffered in single precision: P·N floats.
+// welch_psd(signal_p, fs, N) of the whole records, bit for bit (each segment's periodogram is
+// welch_psd's, with one window and one FFT plan made here: push() allocates nothing). Buffered in
+// single precision: P·N floats.
 class PointAveragedPsd {
  public:
   PointAveragedPsd(std::size_t points, double sample_rate, std::size_t segment_length,
@@ -66,6 +67,9 @@ class PointAveragedPsd {
   double sample_rate_;
   std::size_t length_;
   std::vector<std::vector<double>> weights_;
+  std::vector<char> used_;  // per point: a positive weight in some average
+  WelchSegment segment_;
+  std::vector<double> power_, density_;  // one segment's |X|² and density (scratch)
   std::vector<float> buffer_;  // point p's segment at [p·N, (p + 1)·N)
   std::size_t fill_ = 0;
   std::size_t segments_ = 0;
