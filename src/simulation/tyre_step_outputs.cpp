@@ -225,7 +225,13 @@ void TyreStepOutputs::body_known() {
 
 void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force) {
   const TyreGrid& grid = modes_.grid();
-  response_->step(force, u_, v_);
+  // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps: the
+  // revolution (Fig. 5b) takes one displacement of each of the first Nθ cells' steps. Otherwise
+  // only contact.h5's "all" fields need the displacement; the velocity is evaluated alone.
+  const auto substeps = static_cast<std::size_t>(modes_.substeps());
+  const int around = grid.circumferential, across = grid.lateral;
+  const bool on_revolution = index % substeps == 0 && index / substeps < static_cast<std::size_t>(around);
+  response_->step(force, on_revolution || surface_displacement_ ? &u_ : nullptr, v_);
   if (settings_.belt_psd) settings_.belt_psd->push(std::span<const double>(v_.data(), static_cast<std::size_t>(v_.size())));
   if (settings_.tread_sampling) {
     // The radiating velocity leaves out the cells in contact: the road holds the tread there,
@@ -238,10 +244,7 @@ void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::V
       if (force(static_cast<Eigen::Index>(p)) > 0.0) radiating_(cell_under_[p]) = 0.0;
     tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
   }
-  // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
-  const auto substeps = static_cast<std::size_t>(modes_.substeps());
-  const int around = grid.circumferential, across = grid.lateral;
-  if (index % substeps == 0 && index / substeps < static_cast<std::size_t>(around)) {
+  if (on_revolution) {
     const int g = ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;
     revolution_.push_back(u_(across / 2, g));
   }
