@@ -79,39 +79,47 @@ PointAveragedPsd::PointAveragedPsd(std::size_t points, double sample_rate, std::
   for (std::size_t p = 0; p < points_; ++p)
     for (const std::vector<double>& w : weights_) used_[p] = used_[p] || w[p] > 0.0;
   buffer_.assign(points_ * length_, 0.0f);
+  gathered_.assign(kBlock * length_, 0.0f);
   sums_.assign(weights_.size(), std::vector<double>(length_ / 2 + 1, 0.0));
 }
 
 void PointAveragedPsd::push(std::span<const double> sample) {
   if (sample.size() != points_) throw std::invalid_argument("PointAveragedPsd: one value per point");
-  for (std::size_t p = 0; p < points_; ++p) buffer_[p * length_ + fill_] = static_cast<float>(sample[p]);
-  if (++fill_ < length_) return;
-  // A full segment: each point's periodogram (welch_psd of exactly one segment: the same
-  // operations in the same order), weighted.
+  // Sample t goes to row t mod N: a step's write is one contiguous row (a field of 20 000 belt
+  // cells written with a stride of N floats missed the cache at every value).
+  float* row = buffer_.data() + ((pushed_ % length_) * points_);
+  for (std::size_t p = 0; p < points_; ++p) row[p] = static_cast<float>(sample[p]);
+  ++pushed_;
+  if (pushed_ < length_ || (pushed_ - length_) % (length_ / 2) != 0) return;
+  // A full segment, samples [pushed − N, pushed): rows from (pushed − N) mod N on, wrapping.
+  // Each point's periodogram (welch_psd of exactly one segment: the same operations in the same
+  // order), weighted. Points are gathered kBlock at a time into contiguous segments.
+  const std::size_t first_row = (pushed_ - length_) % length_;
   const std::size_t bins = power_.size();
   const double scale = 1.0 / (sample_rate_ * segment_.window_power() * 1.0);
-  for (std::size_t p = 0; p < points_; ++p) {
-    if (!used_[p]) continue;
-    std::fill(power_.begin(), power_.end(), 0.0);
-    segment_.add_power(buffer_.data() + p * length_, power_);
-    for (std::size_t k = 0; k < bins; ++k) {
-      const bool unpaired = k == 0 || k == bins - 1;
-      density_[k] = power_[k] * ((unpaired ? 1.0 : 2.0) * scale);
+  for (std::size_t p0 = 0; p0 < points_; p0 += kBlock) {
+    const std::size_t block = std::min(kBlock, points_ - p0);
+    for (std::size_t i = 0; i < length_; ++i) {
+      const float* source = buffer_.data() + ((first_row + i) % length_) * points_ + p0;
+      for (std::size_t b = 0; b < block; ++b) gathered_[b * length_ + i] = source[b];
     }
-    for (std::size_t a = 0; a < weights_.size(); ++a) {
-      const double w = weights_[a][p];
-      if (w == 0.0) continue;
-      for (std::size_t k = 0; k < bins; ++k) sums_[a][k] += w * density_[k];
+    for (std::size_t b = 0; b < block; ++b) {
+      const std::size_t p = p0 + b;
+      if (!used_[p]) continue;
+      std::fill(power_.begin(), power_.end(), 0.0);
+      segment_.add_power(gathered_.data() + b * length_, power_);
+      for (std::size_t k = 0; k < bins; ++k) {
+        const bool unpaired = k == 0 || k == bins - 1;
+        density_[k] = power_[k] * ((unpaired ? 1.0 : 2.0) * scale);
+      }
+      for (std::size_t a = 0; a < weights_.size(); ++a) {
+        const double w = weights_[a][p];
+        if (w == 0.0) continue;
+        for (std::size_t k = 0; k < bins; ++k) sums_[a][k] += w * density_[k];
+      }
     }
   }
   ++segments_;
-  // The next segment starts half a segment later: keep the second half.
-  const std::size_t half = length_ / 2;
-  for (std::size_t p = 0; p < points_; ++p) {
-    float* s = buffer_.data() + p * length_;
-    std::copy(s + half, s + length_, s);
-  }
-  fill_ = half;
 }
 
 PowerSpectralDensity PointAveragedPsd::average(std::size_t a) const {

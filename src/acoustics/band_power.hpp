@@ -70,8 +70,10 @@ class PointAveragedPsd {
   std::vector<char> used_;  // per point: a positive weight in some average
   WelchSegment segment_;
   std::vector<double> power_, density_;  // one segment's |X|² and density (scratch)
-  std::vector<float> buffer_;  // point p's segment at [p·N, (p + 1)·N)
-  std::size_t fill_ = 0;
+  static constexpr std::size_t kBlock = 16;  // points gathered at a time (16 × N floats)
+  std::vector<float> buffer_;    // the last N samples: sample t in row t mod N, P floats a row
+  std::vector<float> gathered_;  // kBlock points' segments, N floats each
+  std::size_t pushed_ = 0;
   std::size_t segments_ = 0;
   std::vector<std::vector<double>> sums_;  // per average, Σ_segments Σ_p w·P[k]
 };
