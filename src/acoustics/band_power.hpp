@@ -47,9 +47,9 @@ double level_db(double mean_square, double reference);
 // that arrive one sample of all points at a time (a field over time: nothing but one segment of
 // it is kept). Each average a has weights w_a,p >= 0 (normalised to sum 1). Segments of N
 // samples start at 0, N/2, N, … exactly as welch_psd's, so average(a) equals Σ_p w_a,p ·
-// welch_psd(signal_p, fs, N) of the whole records, bit for bit (each segment's periodogram is
-// welch_psd's, with one window and one FFT plan made here: push() allocates nothing). Buffered in
-// single precision: P·N floats.
+// welch_psd(signal_p, fs, N) of the whole records, to the single precision of the buffer (P·N
+// floats). Each segment's periodogram is, bit for bit, welch_psd's of that segment as buffered,
+// with one window and one FFT plan made here: push() allocates nothing.
 class PointAveragedPsd {
  public:
   PointAveragedPsd(std::size_t points, double sample_rate, std::size_t segment_length,

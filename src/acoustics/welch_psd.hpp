@@ -50,6 +50,7 @@ class WelchSegment {
   std::size_t length() const noexcept { return n_; }
   double window_power() const noexcept { return window_power_; }  // Σ w²
   // Adds |X[k]|² of the windowed segment x[0 .. N) to power[k], k = 0 .. N/2. No allocation.
+  // It transforms in the object's own buffers: one object per thread.
   template <class Sample>
   void add_power(const Sample* x, std::span<double> power) const {
     for (std::size_t i = 0; i < n_; ++i) in_.get()[i] = window_[i] * static_cast<double>(x[i]);
