@@ -58,9 +58,16 @@ double level_db(double mean_square, double reference) {
 
 PointAveragedPsd::PointAveragedPsd(std::size_t points, double sample_rate, std::size_t segment_length,
                                    std::vector<std::vector<double>> weights)
-    : points_(points), sample_rate_(sample_rate), length_(segment_length), weights_(std::move(weights)) {
+    : points_(points),
+      sample_rate_(sample_rate),
+      length_(segment_length),
+      weights_(std::move(weights)),
+      segment_((length_ < 8 || length_ % 2 != 0)
+                   ? throw std::invalid_argument("PointAveragedPsd: segment length must be even and >= 8")
+                   : length_),
+      power_(length_ / 2 + 1),
+      density_(length_ / 2 + 1) {
   if (points_ == 0) throw std::invalid_argument("PointAveragedPsd: no points");
-  if (length_ < 8 || length_ % 2 != 0) throw std::invalid_argument("PointAveragedPsd: segment length must be even and >= 8");
   for (std::vector<double>& w : weights_) {
     if (w.size() != points_) throw std::invalid_argument("PointAveragedPsd: one weight per point");
     const double total = std::accumulate(w.begin(), w.end(), 0.0);
@@ -68,37 +75,51 @@ PointAveragedPsd::PointAveragedPsd(std::size_t points, double sample_rate, std::
       throw std::invalid_argument("PointAveragedPsd: weights must be >= 0 with a positive sum");
     for (double& x : w) x /= total;
   }
+  used_.assign(points_, 0);
+  for (std::size_t p = 0; p < points_; ++p)
+    for (const std::vector<double>& w : weights_) used_[p] = used_[p] || w[p] > 0.0;
   buffer_.assign(points_ * length_, 0.0f);
+  gathered_.assign(kBlock * length_, 0.0f);
   sums_.assign(weights_.size(), std::vector<double>(length_ / 2 + 1, 0.0));
 }
 
 void PointAveragedPsd::push(std::span<const double> sample) {
   if (sample.size() != points_) throw std::invalid_argument("PointAveragedPsd: one value per point");
-  for (std::size_t p = 0; p < points_; ++p) buffer_[p * length_ + fill_] = static_cast<float>(sample[p]);
-  if (++fill_ < length_) return;
-  // A full segment: each point's periodogram (welch_psd of exactly one segment), weighted.
-  std::vector<double> segment(length_);
-  for (std::size_t p = 0; p < points_; ++p) {
-    bool used = false;
-    for (const std::vector<double>& w : weights_) used = used || w[p] > 0.0;
-    if (!used) continue;
-    std::copy(buffer_.begin() + static_cast<std::ptrdiff_t>(p * length_),
-              buffer_.begin() + static_cast<std::ptrdiff_t>((p + 1) * length_), segment.begin());
-    const PowerSpectralDensity psd = welch_psd(segment, sample_rate_, length_);
-    for (std::size_t a = 0; a < weights_.size(); ++a) {
-      const double w = weights_[a][p];
-      if (w == 0.0) continue;
-      for (std::size_t k = 0; k < psd.density.size(); ++k) sums_[a][k] += w * psd.density[k];
+  // Sample t goes to row t mod N: a step's write is one contiguous row (a field of 20 000 belt
+  // cells written with a stride of N floats missed the cache at every value).
+  float* row = buffer_.data() + ((pushed_ % length_) * points_);
+  for (std::size_t p = 0; p < points_; ++p) row[p] = static_cast<float>(sample[p]);
+  ++pushed_;
+  if (pushed_ < length_ || (pushed_ - length_) % (length_ / 2) != 0) return;
+  // A full segment, samples [pushed − N, pushed): rows from (pushed − N) mod N on, wrapping.
+  // Each point's periodogram (welch_psd of exactly one segment: the same operations in the same
+  // order), weighted. Points are gathered kBlock at a time into contiguous segments.
+  const std::size_t first_row = (pushed_ - length_) % length_;
+  const std::size_t bins = power_.size();
+  const double scale = 1.0 / (sample_rate_ * segment_.window_power() * 1.0);
+  for (std::size_t p0 = 0; p0 < points_; p0 += kBlock) {
+    const std::size_t block = std::min(kBlock, points_ - p0);
+    for (std::size_t i = 0; i < length_; ++i) {
+      const float* source = buffer_.data() + ((first_row + i) % length_) * points_ + p0;
+      for (std::size_t b = 0; b < block; ++b) gathered_[b * length_ + i] = source[b];
+    }
+    for (std::size_t b = 0; b < block; ++b) {
+      const std::size_t p = p0 + b;
+      if (!used_[p]) continue;
+      std::fill(power_.begin(), power_.end(), 0.0);
+      segment_.add_power(gathered_.data() + b * length_, power_);
+      for (std::size_t k = 0; k < bins; ++k) {
+        const bool unpaired = k == 0 || k == bins - 1;
+        density_[k] = power_[k] * ((unpaired ? 1.0 : 2.0) * scale);
+      }
+      for (std::size_t a = 0; a < weights_.size(); ++a) {
+        const double w = weights_[a][p];
+        if (w == 0.0) continue;
+        for (std::size_t k = 0; k < bins; ++k) sums_[a][k] += w * density_[k];
+      }
     }
   }
   ++segments_;
-  // The next segment starts half a segment later: keep the second half.
-  const std::size_t half = length_ / 2;
-  for (std::size_t p = 0; p < points_; ++p) {
-    float* s = buffer_.data() + p * length_;
-    std::copy(s + half, s + length_, s);
-  }
-  fill_ = half;
 }
 
 PowerSpectralDensity PointAveragedPsd::average(std::size_t a) const {

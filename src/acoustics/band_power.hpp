@@ -47,8 +47,9 @@ double level_db(double mean_square, double reference);
 // that arrive one sample of all points at a time (a field over time: nothing but one segment of
 // it is kept). Each average a has weights w_a,p >= 0 (normalised to sum 1). Segments of N
 // samples start at 0, N/2, N, … exactly as welch_psd's, so average(a) equals Σ_p w_a,p ·
-// welch_psd(signal_p, fs, N) of the whole records (the periodogram is computed per segment with
-// welch_psd itself). Buffered in single precision: P·N floats.
+// welch_psd(signal_p, fs, N) of the whole records, to the single precision of the buffer (P·N
+// floats). Each segment's periodogram is, bit for bit, welch_psd's of that segment as buffered,
+// with one window and one FFT plan made here: push() allocates nothing.
 class PointAveragedPsd {
  public:
   PointAveragedPsd(std::size_t points, double sample_rate, std::size_t segment_length,
@@ -66,8 +67,13 @@ class PointAveragedPsd {
   double sample_rate_;
   std::size_t length_;
   std::vector<std::vector<double>> weights_;
-  std::vector<float> buffer_;  // point p's segment at [p·N, (p + 1)·N)
-  std::size_t fill_ = 0;
+  std::vector<char> used_;  // per point: a positive weight in some average
+  WelchSegment segment_;
+  std::vector<double> power_, density_;  // one segment's |X|² and density (scratch)
+  static constexpr std::size_t kBlock = 16;  // points gathered at a time (16 × N floats)
+  std::vector<float> buffer_;    // the last N samples: sample t in row t mod N, P floats a row
+  std::vector<float> gathered_;  // kBlock points' segments, N floats each
+  std::size_t pushed_ = 0;
   std::size_t segments_ = 0;
   std::vector<std::vector<double>> sums_;  // per average, Σ_segments Σ_p w·P[k]
 };

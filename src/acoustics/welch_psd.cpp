@@ -18,60 +18,65 @@
 namespace rollnoise {
 namespace {
 
-struct FftwFree {
-  void operator()(void* p) const noexcept { fftw_free(p); }
-};
+void check_segment_length(std::size_t n) {
+  if (n < 8 || n % 2 != 0) {
+    throw InputError("", "segment_length", "must be even and >= 8 (got " + std::to_string(n) + ")");
+  }
+  if (n > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw InputError("", "segment_length", "is too large for the FFT (" + std::to_string(n) + ")");
+  }
+}
 
 }  // namespace
+
+WelchSegment::WelchSegment(std::size_t segment_length) : n_(segment_length) {
+  check_segment_length(n_);
+  window_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    // Periodic (DFT-even) Hann: its 50 %-overlapped copies sum to a constant.
+    window_[i] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n_)));
+    window_power_ += window_[i] * window_[i];
+  }
+  in_.reset(fftw_alloc_real(n_));
+  out_.reset(fftw_alloc_complex(n_ / 2 + 1));
+  if (!in_ || !out_) throw std::bad_alloc();
+  plan_ = std::make_unique<FftwPlan>(
+      [&] { return fftw_plan_dft_r2c_1d(static_cast<int>(n_), in_.get(), out_.get(), FFTW_ESTIMATE); });
+}
+
+void WelchSegment::transform_and_add(std::span<double> power) const {
+  if (power.size() != n_ / 2 + 1) throw std::invalid_argument("WelchSegment: one power per bin, N/2 + 1");
+  plan_->execute();
+  const fftw_complex* out = out_.get();
+  for (std::size_t k = 0; k < power.size(); ++k) power[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+}
 
 PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate, std::size_t segment_length) {
   if (!(sample_rate > 0.0) || !std::isfinite(sample_rate)) {
     throw InputError("", "sample_rate", "must be a finite number > 0 (got " + format_number(sample_rate) + ")");
   }
   const std::size_t n = segment_length;
-  if (n < 8 || n % 2 != 0) {
-    throw InputError("", "segment_length", "must be even and >= 8 (got " + std::to_string(n) + ")");
-  }
+  check_segment_length(n);
   if (n > signal.size()) {
     throw InputError("", "segment_length",
                      "is longer than the signal (" + std::to_string(n) + " > " + std::to_string(signal.size()) +
                          " samples)");
   }
-  if (n > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw InputError("", "segment_length", "is too large for the FFT (" + std::to_string(n) + ")");
-  }
 
   const std::size_t hop = n / 2;  // 50 % overlap
   const std::size_t segments = 1 + (signal.size() - n) / hop;
-
-  std::vector<double> window(n);
-  double window_power = 0.0;  // Σ w²
-  for (std::size_t i = 0; i < n; ++i) {
-    // Periodic (DFT-even) Hann: its 50 %-overlapped copies sum to a constant.
-    window[i] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n)));
-    window_power += window[i] * window[i];
-  }
-
+  const WelchSegment segment(n);
   const std::size_t bins = n / 2 + 1;
-  std::unique_ptr<double[], FftwFree> in(fftw_alloc_real(n));
-  std::unique_ptr<fftw_complex[], FftwFree> out(fftw_alloc_complex(bins));
-  if (!in || !out) throw std::bad_alloc();
-  const FftwPlan plan([&] { return fftw_plan_dft_r2c_1d(static_cast<int>(n), in.get(), out.get(), FFTW_ESTIMATE); });
 
   PowerSpectralDensity psd;
   psd.sample_rate = sample_rate;
   psd.segment_length = n;
   psd.segments = segments;
   psd.density.assign(bins, 0.0);
-  for (std::size_t m = 0; m < segments; ++m) {
-    const double* x = signal.data() + m * hop;
-    for (std::size_t i = 0; i < n; ++i) in[i] = window[i] * x[i];
-    plan.execute();
-    for (std::size_t k = 0; k < bins; ++k) psd.density[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
-  }
+  for (std::size_t m = 0; m < segments; ++m) segment.add_power(signal.data() + m * hop, psd.density);
   // One-sided density: the power of the negative frequencies folded onto the positive ones
   // (factor 2), except at DC and Nyquist which have no mirror.
-  const double scale = 1.0 / (sample_rate * window_power * static_cast<double>(segments));
+  const double scale = 1.0 / (sample_rate * segment.window_power() * static_cast<double>(segments));
   for (std::size_t k = 0; k < bins; ++k) {
     const bool unpaired = k == 0 || k == bins - 1;
     psd.density[k] *= (unpaired ? 1.0 : 2.0) * scale;

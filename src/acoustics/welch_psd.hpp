@@ -16,8 +16,13 @@
 // Segments start at 0, N/2, N, …; samples after the last full segment are not used. The mean is
 // not removed (an acoustic pressure has none; a DC offset appears in bins 0 and 1).
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
+
+#include <fftw3.h>
+
+#include "core/fftw_plan.hpp"
 
 namespace rollnoise {
 
@@ -32,6 +37,37 @@ struct PowerSpectralDensity {
   double frequency(std::size_t k) const { return resolution() * static_cast<double>(k); }
   // Equivalent noise bandwidth of one bin (Hz): fs Σw²/(Σw)² = 1.5 Δf for the Hann window.
   double equivalent_noise_bandwidth() const { return 1.5 * resolution(); }
+};
+
+// One segment's windowed transform, made once and reused (its window, buffers and FFTW plan):
+// what welch_psd does per segment, for callers that transform many segments of one length
+// (PointAveragedPsd: every belt cell's segment, every half segment of a run; making a plan and
+// a window per call was most of a tyre run's response stage, issue 12).
+class WelchSegment {
+ public:
+  // segment_length: even, >= 8 (InputError "segment_length" otherwise).
+  explicit WelchSegment(std::size_t segment_length);
+  std::size_t length() const noexcept { return n_; }
+  double window_power() const noexcept { return window_power_; }  // Σ w²
+  // Adds |X[k]|² of the windowed segment x[0 .. N) to power[k], k = 0 .. N/2. No allocation.
+  // It transforms in the object's own buffers: one object per thread.
+  template <class Sample>
+  void add_power(const Sample* x, std::span<double> power) const {
+    for (std::size_t i = 0; i < n_; ++i) in_.get()[i] = window_[i] * static_cast<double>(x[i]);
+    transform_and_add(power);
+  }
+
+ private:
+  void transform_and_add(std::span<double> power) const;
+  struct FftwFree {
+    void operator()(void* p) const noexcept { fftw_free(p); }
+  };
+  std::size_t n_;
+  std::vector<double> window_;
+  double window_power_ = 0.0;
+  std::unique_ptr<double[], FftwFree> in_;
+  std::unique_ptr<fftw_complex[], FftwFree> out_;
+  std::unique_ptr<FftwPlan> plan_;
 };
 
 // The Welch estimate with segments of `segment_length` samples (even, >= 8, at most the signal's

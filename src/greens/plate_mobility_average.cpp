@@ -37,36 +37,46 @@ double belt_mean_square_mobility(const KroppPlate& plate, double y0, double omeg
   return 0.5 * omega * omega * sum / (plate.modal_mass() * plate.modal_mass());
 }
 
-double near_mean_square_mobility(const KroppPlate& plate, double y0, double omega, double half_length, double step) {
+NearMeanSquareMobility::NearMeanSquareMobility(const KroppPlate& plate, double y0, double half_length, double step)
+    : plate_(plate), y0_(y0) {
   const PlateParameters& p = plate.parameters();
   if (!(y0 >= 0.0 && y0 <= p.width)) throw std::invalid_argument("near_mean_square_mobility: y0 outside the belt");
   if (!(half_length > 0.0 && half_length <= 0.5 * plate.circumference() * (1 + 1e-12)))
     throw std::invalid_argument("near_mean_square_mobility: half_length must be in (0, L/2]");
   if (!(step > 0.0)) throw std::invalid_argument("near_mean_square_mobility: step must be > 0");
-  const int points = std::max(1, static_cast<int>(std::ceil(2.0 * half_length / step)));
-  const double h = 2.0 * half_length / points;
+  points_ = std::max(1, static_cast<int>(std::ceil(2.0 * half_length / step)));
+  const double h = 2.0 * half_length / points_;
   const int M = p.circumferential_modes;
   // cos(k_m x_i), m = 1 … M, for every midpoint x_i: the same for every n and ω.
-  std::vector<double> cosines(static_cast<std::size_t>(M) * static_cast<std::size_t>(points));
-  for (int i = 0; i < points; ++i)
+  cosines_.resize(static_cast<std::size_t>(M) * static_cast<std::size_t>(points_));
+  for (int i = 0; i < points_; ++i)
     for (int m = 1; m <= M; ++m)
-      cosines[static_cast<std::size_t>(i) * static_cast<std::size_t>(M) + static_cast<std::size_t>(m - 1)] =
+      cosines_[static_cast<std::size_t>(i) * static_cast<std::size_t>(M) + static_cast<std::size_t>(m - 1)] =
           std::cos(plate.wavenumber_x(m) * (-half_length + (i + 0.5) * h));
+}
+
+double NearMeanSquareMobility::operator()(double omega) const {
+  const PlateParameters& p = plate_.parameters();
+  const int M = p.circumferential_modes;
   double sum = 0.0;
   for (int n = 1; n <= p.lateral_modes; ++n) {
-    const double s = std::sin(plate.wavenumber_y(n) * y0);
+    const double s = std::sin(plate_.wavenumber_y(n) * y0_);
     if (s == 0.0) continue;
-    const std::vector<std::complex<double>> hm = modal_responses(plate, n, omega);
+    const std::vector<std::complex<double>> hm = modal_responses(plate_, n, omega);
     double mean = 0.0;
-    for (int i = 0; i < points; ++i) {
-      const double* c = cosines.data() + static_cast<std::size_t>(i) * static_cast<std::size_t>(M);
+    for (int i = 0; i < points_; ++i) {
+      const double* c = cosines_.data() + static_cast<std::size_t>(i) * static_cast<std::size_t>(M);
       std::complex<double> a = hm[0];  // H is even in m: e^{ikx} + e^{−ikx} = 2 cos(kx)
       for (std::size_t m = 1; m < hm.size(); ++m) a += 2.0 * c[m - 1] * hm[m];
       mean += std::norm(a);
     }
-    sum += s * s * mean / points;
+    sum += s * s * mean / points_;
   }
-  return 0.5 * omega * omega * sum / (plate.modal_mass() * plate.modal_mass());
+  return 0.5 * omega * omega * sum / (plate_.modal_mass() * plate_.modal_mass());
+}
+
+double near_mean_square_mobility(const KroppPlate& plate, double y0, double omega, double half_length, double step) {
+  return NearMeanSquareMobility(plate, y0, half_length, step)(omega);
 }
 
 std::complex<double> patch_receptance(const KroppPlate& plate, double length, double width, double omega) {

@@ -17,6 +17,8 @@
 //   P_mn = sinc(k_m l/2) · [cos(k_n(b − w)/2) − cos(k_n(b + w)/2)]/(k_n w)
 // (the patch mean of each mode shape). It is what a rigid flat patch pressed on the belt feels;
 // the point receptance α(0, y0, y0) overstates it wherever the load's spread matters.
+#include <vector>
+
 #include "greens/kropp_plate.hpp"
 
 namespace rollnoise {
@@ -28,6 +30,21 @@ double belt_mean_square_mobility(const KroppPlate& plate, double y0, double omeg
 // mean is taken at midpoints `step` m apart (or the nearest spacing that divides 2d).
 double near_mean_square_mobility(const KroppPlate& plate, double y0, double omega, double half_length,
                                  double step = 2.5e-3);
+
+// The same for many ω: the table of cos(k_m x_i), the same for every ω, made once (the energy
+// budget evaluates 8 frequencies in each of some 20 bands; remaking the table each time was a
+// third of its cost, issue 12). The plate must outlive it. Equal to the function above bit for bit.
+class NearMeanSquareMobility {
+ public:
+  NearMeanSquareMobility(const KroppPlate& plate, double y0, double half_length, double step = 2.5e-3);
+  double operator()(double omega) const;
+
+ private:
+  const KroppPlate& plate_;
+  double y0_;
+  int points_ = 1;
+  std::vector<double> cosines_;  // [i·M + m − 1]
+};
 
 // α_patch (m/N) for a patch of length l along x and width w ≤ b across, centred on the belt.
 std::complex<double> patch_receptance(const KroppPlate& plate, double length, double width, double omega);

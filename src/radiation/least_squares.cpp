@@ -181,4 +181,17 @@ Eigen::MatrixXcd RegularisedLeastSquares::apply_pseudo_inverse_right(const Eigen
   return padded.topRows(m).adjoint();
 }
 
+Eigen::MatrixXcd blas_product(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
+  if (a.cols() != b.rows()) throw std::invalid_argument("blas_product: the inner dimensions differ");
+  Eigen::MatrixXcd out(a.rows(), b.cols());
+  if (out.size() == 0) return out;
+  if (a.cols() == 0) return Eigen::MatrixXcd::Zero(a.rows(), b.cols());
+  use_single_threaded_blas();
+  const std::complex<double> one(1.0), zero(0.0);
+  cblas_zgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, static_cast<int>(a.rows()), static_cast<int>(b.cols()),
+              static_cast<int>(a.cols()), &one, a.data(), static_cast<int>(a.rows()), b.data(),
+              static_cast<int>(b.rows()), &zero, out.data(), static_cast<int>(out.rows()));
+  return out;
+}
+
 }  // namespace rollnoise

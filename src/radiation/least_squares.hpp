@@ -24,6 +24,13 @@ namespace rollnoise {
 
 // automatic: the normal equations when well conditioned, else the QR; qr: always the QR (the
 // reference, for tests and benchmarks); normal_equations: always them (unless the Cholesky fails).
+// a·b by the BLAS (zgemm, single-threaded): the radiation applies its cached power operators
+// this way (tyre_radiation.cpp), 4-5× faster than Eigen's product compiled for the baseline
+// instruction set (issue 12: it was half of a warm run's radiation). Its sums run in the
+// kernel's order, not Eigen's: the products differ from Eigen's in the last bits (1e-16
+// relative), the same on every run on one processor.
+Eigen::MatrixXcd blas_product(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b);
+
 enum class LeastSquaresMethod { automatic, qr, normal_equations };
 
 class RegularisedLeastSquares {

@@ -1,5 +1,7 @@
 #include "radiation/tyre_radiation.hpp"
 
+#include "radiation/least_squares.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -270,7 +272,7 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
     Eigen::VectorXd squares = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(out.bins.size()));
     for (std::size_t c = 0; c < coordinates.size(); ++c) {
       if (operators.power[c].rows() == 0) continue;
-      const Eigen::MatrixXcd amplitudes = operators.power[c] * coordinates[c];
+      const Eigen::MatrixXcd amplitudes = blas_product(operators.power[c], coordinates[c]);
       for (Eigen::Index i = 0; i < amplitudes.cols(); ++i) squares(i) += amplitudes.col(i).squaredNorm();
     }
     for (std::size_t i = 0; i < out.bins.size(); ++i) {

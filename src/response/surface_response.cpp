@@ -43,14 +43,14 @@ void SurfaceResponse::add_out_of_roundness(int order, int lateral, double amplit
       std::polar(amplitude / modes_.weight(order), phase);
 }
 
-void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& displacement,
+void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd* displacement,
                            Eigen::MatrixXd& velocity) {
   engine_->advance(force);
   for (std::size_t r = 0; r < out_of_round_.size(); ++r) out_of_round_[r] *= out_of_round_step_[r];
   const int big_n = modes_.grid().circumferential;
   const int bins = big_n / 2 + 1;
   RealFftBatch& fft = *fft_;
-  for (int component = 0; component < 2; ++component) {
+  for (int component = displacement ? 0 : 1; component < 2; ++component) {
     for (int l = 0; l < modes_.lateral_modes(); ++l) {
       for (int m = 0; m < bins; ++m) {
         std::complex<double> value = 0.0;
@@ -70,7 +70,7 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
     fft.backward();
     for (int l = 0; l < modes_.lateral_modes(); ++l)
       for (int g = 0; g < big_n; ++g) around_(l, g) = fft.at(l, g);
-    Eigen::MatrixXd& out = component == 0 ? displacement : velocity;
+    Eigen::MatrixXd& out = component == 0 ? *displacement : velocity;
     out.noalias() = shapes_ * around_;
   }
 }

@@ -48,7 +48,13 @@ class SurfaceResponse {
   // Applies the window forces of the next step and evaluates the surface: displacement (m) and
   // velocity ∂u/∂t at fixed positions (m/s), each Ny × Nθ (row j: lateral position y_j; column
   // g: position g·dx around from the bottom of the tyre, in the direction of travel).
-  void step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& displacement, Eigen::MatrixXd& velocity);
+  void step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& displacement, Eigen::MatrixXd& velocity) {
+    step(force, &displacement, velocity);
+  }
+  // The same, the displacement evaluated only when asked for (not null): the velocity alone is
+  // half the transforms, and a run needs the whole displacement field only for contact.h5's
+  // "all" fields (issue 12). The velocity is the same bit for bit either way.
+  void step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd* displacement, Eigen::MatrixXd& velocity);
 
   double lateral_position(int j) const;
 

@@ -110,8 +110,8 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TextureUnderContact&
   b.force_estimate_rigid_patch = times(rigid_patch, b.texture_patch);
   const std::vector<double> y2_belt =
       band_means_of(b.bands, [&](double f) { return belt_mean_square_mobility(plate, y0, two_pi * f); });
-  const std::vector<double> y2_near = band_means_of(
-      b.bands, [&](double f) { return near_mean_square_mobility(plate, y0, two_pi * f, budget_near_contact_m); });
+  const NearMeanSquareMobility near_mobility(plate, y0, budget_near_contact_m);
+  const std::vector<double> y2_near = band_means_of(b.bands, [&](double f) { return near_mobility(two_pi * f); });
   b.v2_tread_estimate = times(y2_belt, b.force);
   b.v2_contact_estimate = times(y2_near, b.force);
   return b;

@@ -36,6 +36,7 @@
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/greens_plots.hpp"
 #include "simulation/run_size.hpp"
+#include "simulation/stage_times.hpp"
 #include "simulation/tyre_sound.hpp"
 #include "simulation/tyre_step_outputs.hpp"
 
@@ -185,6 +186,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   const ConfigTable road_table = file.section("road");
   const ConfigTable rolling = file.section("rolling");
   const ConfigTable output = file.optional_section("output");
+  // Where the run's time goes (summary.json "stage_times_s"), from here: the case's parsing before
+  // is in the wall time only.
+  StageTimes stages;
 
   const RollingTyreModel model = read_rolling_tyre_model(tyre, options.cache);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
@@ -244,11 +248,13 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
   size.fields = fields;
   check_run_fits(estimate_tyre_run(size, file.name()), available_memory_bytes(), available_disk_bytes(out), options.force);
+  stages.lap("model_and_grid");
   const double travel = settings.speed * dt * static_cast<double>(steps);
   // Road y is measured from the wheel's centre line.
   const std::unique_ptr<RoadSurface> road =
       make_road_surface(road_table, grid.x(0) - 3.0 * grid.dx(), grid.x(grid.window - 1) + 3.0 * grid.dx() + travel,
                         0.5 * grid.contact_width());
+  stages.lap("road");
 
   StagedOutputDirectory staged(out);
   std::optional<ProgressReporter> progress;
@@ -288,12 +294,15 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     };
   }
   TyreStepOutputs outputs(*rolling_modes, std::move(step_outputs));
+  stages.lap("run_setup");
   const auto contact_started = std::chrono::steady_clock::now();
   const TyreContactTrace trace =
       simulate_rolling_tyre(*rolling_modes, local, *road, run, progress ? &*progress : nullptr, springs.get(), &outputs);
   const double contact_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_started).count() - trace.sink_seconds;
+  stages.lap("contact_and_response");  // split below into contact_time_s and response_and_outputs_time_s
   outputs.finish();
+  stages.lap("contact_h5_finish");
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   write_totals_csv(staged.staging() / "contact.csv", trace);
@@ -306,6 +315,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
   }
 
+  stages.lap("contact_outputs_and_plots");
   const double mean_power = trace.input_power.mean();
   nlohmann::json summary;
   summary["case"] = file.name();
@@ -390,10 +400,15 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                                         contact_stiffness));
     }
     budget_written = budget != nullptr;
+    stages.lap("energy_budget");
     const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed,
                                                   fs::path(file.path()).filename().string(), plots, budget.get(),
                                                   options.progress);
-    for (const auto& [key, value] : heard.items()) summary[key] = value;
+    stages.skip();
+    for (const auto& [key, value] : heard.items())
+      if (key != "sound_stage_times_s") summary[key] = value;
+    const nlohmann::json& sound_stages = heard.at("sound_stage_times_s");
+    for (const auto& [key, value] : sound_stages.items()) summary["stage_times_s"][key] = value;
   }
   summary["warnings"] = trace.warnings;
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
@@ -405,6 +420,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   summary["response_and_outputs_time_s"] = trace.sink_seconds;
   if (trace.lcp_factorisations >= 0) summary["lcp_factorisations"] = trace.lcp_factorisations;
   summary["lcp_cg_iterations"] = trace.lcp_cg_iterations;
+  const nlohmann::json run_stages = stages.json();
+  for (const auto& [key, value] : run_stages.items()) summary["stage_times_s"][key] = value;
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_text_file(staged.staging() / "summary.json", summary.dump(2) + "\n");
   if (!options.case_text.empty()) write_text_file(staged.staging() / "case.toml", options.case_text);

@@ -21,6 +21,7 @@
 #include "core/progress.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/sound_report.hpp"
+#include "simulation/stage_times.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -132,6 +133,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
                                 const std::string& source, bool plots, const TyreBudget* budget, bool progress) {
   const auto started = std::chrono::steady_clock::now();
+  StageTimes stages;
   Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
   for (std::size_t r = 0; r < settings.receivers.size(); ++r)
     positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
@@ -143,6 +145,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
   bar.finish();
   const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  stages.lap("radiation");
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
   const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);
 
@@ -169,14 +172,18 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     signals.push_back({"spb_passby", pass_by(make_loopable(stationary.pressure, settings.audio_rate), settings.audio_rate, passing),
                        settings.audio_rate, highest_band});
   }
+  stages.lap("audio_signals");
   nlohmann::json result;
   std::vector<BandSpectrum> spectra;
   result["levels"] = write_sound_report(dir, signals, source, plots, &spectra);
+  stages.lap("spectra_and_levels");
   result["sound_power"] = write_sound_power(dir, sound, highest_band, plots);
+  stages.lap("sound_power");
   if (budget) {
     result["energy_budget"] = write_energy_budget(dir, *budget, sound, tread_velocity, radiation.mesh(),
                                                   settings.radiation.mesh.radius, settings.radiation.medium,
                                                   settings.receivers, spectra, plots);
+    stages.lap("energy_budget_output");
   }
 
   double peak = 0.0;
@@ -192,6 +199,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     result["full_scale_pa"] = full_scale;
     result["audio_rate_hz"] = settings.audio_rate;
     result["wav_duration_s"] = static_cast<double>(signals.front().pressure.size()) / settings.audio_rate;
+    stages.lap("wav");
   }
   // The mesh's flat: the extent of its vertices on the road (at the clearance), to compare with
   // the contact solution's patch_length_m and patch_width_m.
@@ -249,6 +257,8 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
                          {"anchors_from_cache", std::count(sound.anchor_from_cache.begin(), sound.anchor_from_cache.end(), true)},
                          {"cache", settings.cache_folder ? settings.cache_folder->string() : std::string()},
                          {"time_s", radiation_seconds}};
+  stages.lap("sound_summary");
+  result["sound_stage_times_s"] = stages.json();  // tyre_simulation.cpp folds it into stage_times_s
   return result;
 }
 

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <span>
 #include <stdexcept>
 
@@ -219,36 +223,122 @@ void TyreStepOutputs::body_known() {
   sampling_ = settings_.tread_sampling(RadiatingPatch{lengths.mean(), widths.mean(), indentation_});
   if (sampling_.rows() == 0) throw std::logic_error("TyreStepOutputs: an empty tread sampling");
   tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
-  // Up to 4096 waiting steps at once, seconds of work on a fine grid: polled like the step
-  // loop, so that Ctrl-C here does not wait for the watchdog.
-  for (Eigen::Index n = 0; n < patch_forces_.cols(); ++n) {
-    settings_.cancel.throw_if_cancelled();
-    respond(static_cast<std::size_t>(n), patch_forces_.col(n));
-  }
+  respond_waiting_steps();
   patch_forces_.resize(0, 0);
 }
 
+// The waiting steps are all of a run of up to 4096 steps, responded to after the contact loop:
+// the recursion (evaluate: the modal engine and the transforms to the belt) and what is taken
+// from its fields (use: the spectra, the radiating velocity, contact.h5) are about 2 : 1 in
+// cost, so they run as a pipeline on two threads, a ring of field buffers between them (issue
+// 12: the response stage was the largest part of a warm run beside the contact). Each half
+// runs its steps in order, so the results are those of respond() step by step, bit for bit.
+void TyreStepOutputs::respond_waiting_steps() {
+  const auto steps = static_cast<std::size_t>(patch_forces_.cols());
+  if (!settings_.pipelined) {
+    for (std::size_t n = 0; n < steps; ++n) {
+      settings_.cancel.throw_if_cancelled();
+      respond(n, patch_forces_.col(static_cast<Eigen::Index>(n)));
+    }
+    return;
+  }
+  constexpr std::size_t ring = 4;
+  struct Slot {
+    Eigen::MatrixXd u, v;
+  };
+  std::vector<Slot> slots(ring, Slot{u_, v_});  // allocated here, not in the loop
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::size_t evaluated = 0, used = 0;  // steps finished by each half
+  bool stop = false;
+  std::exception_ptr failure;
+  const auto fail = [&](std::exception_ptr error) {
+    const std::lock_guard lock(mutex);
+    if (!failure) failure = error;
+    stop = true;
+    changed.notify_all();
+  };
+  std::jthread user([&] {
+    try {
+      for (std::size_t n = 0; n < steps; ++n) {
+        {
+          std::unique_lock lock(mutex);
+          changed.wait(lock, [&] { return stop || evaluated > n; });
+          if (evaluated <= n) return;  // stopped
+        }
+        const Slot& slot = slots[n % ring];
+        use(n, patch_forces_.col(static_cast<Eigen::Index>(n)), slot.u, slot.v);
+        const std::lock_guard lock(mutex);
+        used = n + 1;
+        changed.notify_all();
+      }
+    } catch (...) {
+      fail(std::current_exception());
+    }
+  });
+  try {
+    for (std::size_t n = 0; n < steps; ++n) {
+      // Up to 4096 waiting steps, seconds of work on a fine grid: polled like the step loop, so
+      // that Ctrl-C here does not wait for the watchdog.
+      settings_.cancel.throw_if_cancelled();
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return stop || n < used + ring; });  // the slot is free
+        if (stop) break;
+      }
+      Slot& slot = slots[n % ring];
+      evaluate(patch_forces_.col(static_cast<Eigen::Index>(n)), slot.u, slot.v, needs_displacement(n));
+      const std::lock_guard lock(mutex);
+      evaluated = n + 1;
+      changed.notify_all();
+    }
+  } catch (...) {
+    fail(std::current_exception());
+  }
+  user.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force) {
+  evaluate(force, u_, v_, needs_displacement(index));
+  use(index, force, u_, v_);
+}
+
+// Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps: the
+// revolution (Fig. 5b) takes one displacement of each of the first Nθ cells' steps. Otherwise
+// only contact.h5's "all" fields need the displacement; the velocity is evaluated alone.
+bool TyreStepOutputs::needs_displacement(std::size_t index) const {
+  const auto substeps = static_cast<std::size_t>(modes_.substeps());
+  const bool on_revolution =
+      index % substeps == 0 && index / substeps < static_cast<std::size_t>(modes_.grid().circumferential);
+  return on_revolution || surface_displacement_ != nullptr;
+}
+
+void TyreStepOutputs::evaluate(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u, Eigen::MatrixXd& v,
+                               bool displacement) {
+  response_->step(force, displacement ? &u : nullptr, v);
+}
+
+void TyreStepOutputs::use(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, const Eigen::MatrixXd& u,
+                          const Eigen::MatrixXd& v) {
   const TyreGrid& grid = modes_.grid();
-  response_->step(force, u_, v_);
-  if (settings_.belt_psd) settings_.belt_psd->push(std::span<const double>(v_.data(), static_cast<std::size_t>(v_.size())));
+  const auto substeps = static_cast<std::size_t>(modes_.substeps());
+  const int around = grid.circumferential, across = grid.lateral;
+  if (settings_.belt_psd) settings_.belt_psd->push(std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
   if (settings_.tread_sampling) {
     // The radiating velocity leaves out the cells in contact: the road holds the tread there,
     // and what the tread displaces escapes only through the texture's channels (air pumping,
     // not modelled). Left in, the contact patch would pump into the mesh's 2 mm clearance (the
     // flat of the deformed tyre, or the undeformed cylinder's lowest line) and be amplified by
     // the very horn the mesh resolves.
-    radiating_ = v_.reshaped();
+    radiating_ = v.reshaped();
     for (std::size_t p = 0; p < cell_under_.size(); ++p)
       if (force(static_cast<Eigen::Index>(p)) > 0.0) radiating_(cell_under_[p]) = 0.0;
     tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
   }
-  // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps.
-  const auto substeps = static_cast<std::size_t>(modes_.substeps());
-  const int around = grid.circumferential, across = grid.lateral;
   if (index % substeps == 0 && index / substeps < static_cast<std::size_t>(around)) {
     const int g = ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;
-    revolution_.push_back(u_(across / 2, g));
+    revolution_.push_back(u(across / 2, g));
   }
   if (!h5_) return;
   writing([&] {
@@ -260,9 +350,9 @@ void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::V
               static_cast<float>(field(j, g));
     };
     if (surface_displacement_) {
-      row_major(u_);
+      row_major(u);
       surface_displacement_->append(slice_.data());
-      row_major(v_);
+      row_major(v);
       surface_velocity_->append(slice_.data());
       return;
     }
@@ -273,7 +363,7 @@ void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::V
         const int j1 = std::min(across, (jb + 1) * bc), g1 = std::min(around, (gb + 1) * ba);
         double sum = 0.0;
         for (int g = gb * ba; g < g1; ++g)
-          for (int j = jb * bc; j < j1; ++j) sum += v_(j, g);
+          for (int j = jb * bc; j < j1; ++j) sum += v(j, g);
         blocks_[static_cast<std::size_t>(jb) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(gb)] =
             static_cast<float>(sum / ((j1 - jb * bc) * (g1 - gb * ba)));
       }

@@ -74,6 +74,10 @@ struct TyreStepOutputSettings {
   std::function<Eigen::SparseMatrix<double>(const RadiatingPatch&)> tread_sampling;
   PointAveragedPsd* belt_psd = nullptr;  // receives every step's belt velocity (index j + Ny·g)
   CancellationToken cancel;              // Ctrl-C (polled where the waiting steps catch up)
+  // The steps that wait for the radiating body respond on two threads, the response's recursion
+  // on one and what is taken from its fields on the other (the same results bit for bit); false:
+  // step by step on the calling thread (the reference, for tests).
+  bool pipelined = true;
 };
 
 class TyreStepOutputs final : public ContactStepSink {
@@ -104,6 +108,14 @@ class TyreStepOutputs final : public ContactStepSink {
   void open_contact_h5(const SurfaceResponse& response);
   // The response stage and what follows it, for step `index` with its forces.
   void respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force);
+  // respond() in two halves: the belt's fields of the step (the response's recursion), and
+  // what is taken from them (the spectra, the radiating velocity, the revolution, contact.h5).
+  bool needs_displacement(std::size_t index) const;
+  void evaluate(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u, Eigen::MatrixXd& v, bool displacement);
+  void use(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, const Eigen::MatrixXd& u,
+           const Eigen::MatrixXd& v);
+  // The waiting steps 0 … n − 1 (forces in patch_forces_), the two halves on two threads.
+  void respond_waiting_steps();
   // The patch is measured: the mesh is made and the waiting steps respond.
   void body_known();
   std::size_t strip_length() const;

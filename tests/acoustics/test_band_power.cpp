@@ -83,6 +83,48 @@ TEST(BandPower, PointAverageEqualsTheWeightedMeanOfWelchPsds) {
   }
 }
 
+// push() reuses one window and one FFT plan (issue 12: a plan per point and segment was most of
+// a tyre run's response stage). The sums must equal, bit for bit, what welch_psd gives for each
+// buffered (single-precision) segment, weighted and added in the same order.
+TEST(BandPower, PointAverageIsBitForBitTheSegmentsWelchPsds) {
+  const double fs = 11700.0;
+  const std::size_t n = 900, points = 5, segment = 256;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<std::vector<double>> signal(points, std::vector<double>(n));
+  for (std::size_t p = 0; p < points; ++p)
+    for (std::size_t t = 0; t < n; ++t) signal[p][t] = 1e-3 * normal(rng) * static_cast<double>(p + 1);
+  const std::vector<std::vector<double>> weights{{1.0, 0.0, 3.0, 2.0, 0.5}, {0.0, 1.0, 0.0, 0.0, 0.0}};
+  PointAveragedPsd average(points, fs, segment, weights);
+  std::vector<double> sample(points);
+  for (std::size_t t = 0; t < n; ++t) {
+    for (std::size_t p = 0; p < points; ++p) sample[p] = signal[p][t];
+    average.push(sample);
+  }
+  // The reference: welch_psd of each segment as the buffer holds it (floats), as push() used to.
+  std::vector<std::vector<double>> sums(weights.size(), std::vector<double>(segment / 2 + 1, 0.0));
+  std::size_t segments = 0;
+  for (std::size_t start = 0; start + segment <= n; start += segment / 2, ++segments) {
+    for (std::size_t p = 0; p < points; ++p) {
+      std::vector<double> x(segment);
+      for (std::size_t i = 0; i < segment; ++i) x[i] = static_cast<double>(static_cast<float>(signal[p][start + i]));
+      const PowerSpectralDensity psd = welch_psd(x, fs, segment);
+      for (std::size_t a = 0; a < weights.size(); ++a) {
+        const double total = weights[a][0] + weights[a][1] + weights[a][2] + weights[a][3] + weights[a][4];
+        const double w = weights[a][p] / total;
+        if (w == 0.0) continue;
+        for (std::size_t k = 0; k < psd.density.size(); ++k) sums[a][k] += w * psd.density[k];
+      }
+    }
+  }
+  ASSERT_EQ(average.segments(), segments);
+  for (std::size_t a = 0; a < weights.size(); ++a) {
+    const PowerSpectralDensity got = average.average(a);
+    for (std::size_t k = 0; k < got.density.size(); ++k)
+      EXPECT_EQ(got.density[k], sums[a][k] / static_cast<double>(segments)) << a << ' ' << k;
+  }
+}
+
 TEST(BandPower, BandSumsTakeTheBinsInsideTheEdges) {
   const std::vector<FractionalOctaveBand> bands = fractional_octave_bands(3, 1000.0, 1250.0);
   // 1000 Hz band: [891.3, 1122.0); 1250 Hz band: [1122.0, 1412.5)

@@ -56,6 +56,18 @@ TEST(PlateMobilityAverage, NearMeanEqualsTheGridAverageOverTheStretch) {
   EXPECT_GT(near, belt_mean_square_mobility(plate, 0.09, omega));
 }
 
+// The energy budget makes the table of cosines once and evaluates many frequencies with it:
+// each must equal a fresh evaluation, bit for bit, in any order.
+TEST(PlateMobilityAverage, NearMeanReusedOverFrequenciesEqualsFreshEvaluations) {
+  const KroppPlate plate(small_tyre());
+  const NearMeanSquareMobility near(plate, 0.07, 0.3);
+  for (double f : {700.0, 90.0, 2500.0, 700.0}) {
+    const double omega = 2 * kPi * f;
+    EXPECT_EQ(near(omega), near_mean_square_mobility(plate, 0.07, omega, 0.3)) << f << " Hz";
+  }
+  EXPECT_NE(near(2 * kPi * 700.0), near(2 * kPi * 90.0));
+}
+
 // The patch receptance against the mean of the point-to-point receptance over pairs of points
 // of the patch (midpoint rule, 80 × 10 points). The rule's error on a mode is about (k h)²/24:
 // around, k_24·h = 0.19 → 1.5e-3; across, k_5·h_y = 1.22 → 6 % on the highest lateral mode's

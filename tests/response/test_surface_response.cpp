@@ -93,6 +93,34 @@ TEST(SurfaceResponse, MatchesTheContactSolutionAtTheWindow) {
   EXPECT_LT(u.col(grid.circumferential / 2).cwiseAbs().maxCoeff(), 0.05 * scale);
 }
 
+TEST(SurfaceResponse, VelocityAloneIsTheSameBitForBit) {
+  // The run's outputs ask for the displacement only on some steps (tyre_step_outputs.cpp): the
+  // velocity of a step evaluated alone must equal the one evaluated beside the displacement, and
+  // skipping the displacement must not disturb the steps after it.
+  const TyreGrid grid = test_grid(256, 8);
+  const KroppPlate plate(test_plate(64));
+  const double speed = 20.0;
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
+  const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
+  const TyreContactTrace t = simulate_rolling_tyre(rolling, local, Texture(), {speed, 40 * grid.dx() / speed, 3000.0, HistoryKind::modal});
+  SurfaceResponse both(rolling, t.steady_force, grid.lateral), alone(rolling, t.steady_force, grid.lateral);
+  Eigen::MatrixXd u(grid.lateral, grid.circumferential), v(grid.lateral, grid.circumferential);
+  Eigen::MatrixXd u_alone = Eigen::MatrixXd::Constant(grid.lateral, grid.circumferential, 7.0);
+  Eigen::MatrixXd v_alone(grid.lateral, grid.circumferential);
+  double moving = 0.0;
+  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
+    const Eigen::VectorXd force = t.force.row(n).transpose();
+    both.step(force, u, v);
+    const bool with_displacement = n % 3 == 0;
+    alone.step(force, with_displacement ? &u_alone : nullptr, v_alone);
+    ASSERT_TRUE(v_alone == v) << "step " << n;
+    if (with_displacement) ASSERT_TRUE(u_alone == u) << "step " << n;
+    else ASSERT_FALSE(u_alone == u) << "step " << n;  // untouched since the last step that asked
+    moving = std::max(moving, v.cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(moving, 0.0);
+}
+
 TEST(SurfaceResponse, SteadyRollingOnASmoothRoadIsStill) {
   // In steady rolling the deformed shape stands still under the axle while material moves
   // through it. The surface at every fixed position does not move, so nothing radiates

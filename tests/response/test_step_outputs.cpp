@@ -1,0 +1,100 @@
+// TyreStepOutputs (src/simulation/tyre_step_outputs.hpp): what a tyre run takes from each step
+// of the response stage. The steps that wait for the radiating body run as a two-thread
+// pipeline (issue 12); it must give what responding step by step gives, bit for bit.
+#include <cmath>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "acoustics/band_power.hpp"
+#include "contact/rolling_tyre.hpp"
+#include "greens/kropp_plate.hpp"
+#include "greens/tread_compliance.hpp"
+#include "road/road_surface.hpp"
+#include "simulation/tyre_step_outputs.hpp"
+
+namespace rollnoise {
+namespace {
+
+class Texture : public RoadSurface {
+ public:
+  std::string type() const override { return "texture"; }
+  double height(double x, double y) const override {
+    if (x < 0.0) return 0.0;
+    return 1e-3 * std::sin(2 * M_PI * x / 0.07) * std::cos(2 * M_PI * y / 0.11) +
+           4e-4 * std::sin(2 * M_PI * x / 0.023 + 1.0);
+  }
+};
+
+struct Outputs {
+  Eigen::MatrixXd tread_velocity;
+  std::vector<double> psd, revolution;
+  RadiatingPatch patch;
+};
+
+Outputs run(bool pipelined, const std::filesystem::path& h5) {
+  PlateParameters p;
+  p.radius = 0.3;
+  p.width = 0.16;
+  p.mass_per_area = 10.0;
+  p.tension_x = 8e4;
+  p.tension_y = 1e4;
+  p.bending_x = 6.0;
+  p.bending_y = 3.0;
+  p.bending_xy = 4.0;
+  p.foundation_stiffness = 3e6;
+  p.loss_factor = 0.1;
+  p.circumferential_modes = 64;
+  p.lateral_modes = 6;
+  const KroppPlate plate(p);
+  TyreGrid grid;
+  grid.radius = 0.3;
+  grid.width = 0.16;
+  grid.circumferential = 128;
+  grid.lateral = 6;
+  grid.window = 8;
+  const double speed = 20.0;
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
+  const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
+  TyreRunSettings settings{speed, 200 * grid.dx() / speed, 3000.0, HistoryKind::modal};
+  settings.keep_fields = false;
+  const auto samples = static_cast<std::size_t>(std::llround(settings.duration / (grid.dx() / speed))) + 1;
+  const auto cells = static_cast<std::size_t>(grid.circumferential) * static_cast<std::size_t>(grid.lateral);
+  PointAveragedPsd psd(cells, speed / grid.dx(), 32, {std::vector<double>(cells, 1.0)});
+  Outputs out;
+  TyreStepOutputSettings step{ContactFields::contact, h5, samples, speed, 3000.0, {}, {}, &psd, {}, true};
+  // Some belt cells, weighted: a stand-in for the radiation mesh's sampling.
+  step.tread_sampling = [&](const RadiatingPatch& patch) {
+    out.patch = patch;
+    Eigen::SparseMatrix<double> s(5, static_cast<Eigen::Index>(cells));
+    for (int r = 0; r < 5; ++r) s.insert(r, 37 * r + 3) = 0.5 + r;
+    s.makeCompressed();
+    return s;
+  };
+  step.pipelined = pipelined;
+  TyreStepOutputs outputs(rolling, std::move(step));
+  simulate_rolling_tyre(rolling, local, Texture(), settings, nullptr, nullptr, &outputs);
+  outputs.finish();
+  out.tread_velocity = outputs.tread_velocity();
+  out.psd = psd.average(0).density;
+  out.revolution = outputs.revolution();
+  return out;
+}
+
+TEST(TyreStepOutputs, PipelinedWaitingStepsEqualStepByStep) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rollnoise_test_step_outputs";
+  std::filesystem::create_directories(dir);
+  const Outputs pipelined = run(true, dir / "pipelined.h5");
+  const Outputs reference = run(false, dir / "reference.h5");
+  std::filesystem::remove_all(dir);
+  ASSERT_GT(pipelined.tread_velocity.rows(), 100);
+  EXPECT_GT(pipelined.tread_velocity.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_TRUE(pipelined.tread_velocity == reference.tread_velocity);
+  EXPECT_EQ(pipelined.psd, reference.psd);
+  ASSERT_FALSE(pipelined.revolution.empty());
+  EXPECT_EQ(pipelined.revolution, reference.revolution);
+  EXPECT_EQ(pipelined.patch.length, reference.patch.length);
+}
+
+}  // namespace
+}  // namespace rollnoise
