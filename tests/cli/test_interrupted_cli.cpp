@@ -59,6 +59,25 @@ void stop_verb_while_computing(const std::vector<std::string>& args, int signal_
   expect_earlier_output(ws);
 }
 
+// Starts `args` (writing work()/result) in `ws`, which holds the earlier output, waits until its
+// staging folder holds `ready` (the folder itself when empty) and `settle` more, sends
+// `signal_number`, and checks the stop, that the staging folder went and the earlier output.
+void stop_verb_once_staged(const Workspace& ws, const std::vector<std::string>& args, const fs::path& ready,
+                           std::chrono::seconds timeout, std::chrono::milliseconds settle, int signal_number) {
+  const pid_t pid = start_rollnoise(ws, args);
+  ASSERT_GT(pid, 0);
+  const fs::path staging = ws.work() / (".result.partial-" + std::to_string(pid));
+  ASSERT_TRUE(wait_until([&] { return fs::exists(staging / ready); }, timeout))
+      << "never got to " << (staging / ready) << "; stderr: " << stderr_of(ws);
+  std::this_thread::sleep_for(settle);
+  ASSERT_TRUE(still_running(pid)) << "the run ended before the signal; make it longer";
+  const StoppedRun r = stop_with(ws, pid, signal_number);
+  expect_clean_stop(r, signal_number);
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
+  expect_earlier_output(ws);
+}
+
 // A plate tyre fitted to its point mobility from 400 starting points: the fit runs for tens of
 // seconds, every Ceres iteration polling the signal.
 TEST(InterruptedRun, SigintStopsCalibrateWithin1sAndLeavesTheDestination) {
@@ -84,17 +103,8 @@ TEST(InterruptedRun, SigtermStopsRoadWhileItWritesAndRemovesItsStagingFolder) {
   Workspace ws;
   write_earlier_output(ws);
   ws.write("sine.toml", "[road]\ntype = \"sine\"\namplitude = 1e-3\nwavelength = 0.1\n");
-  const pid_t pid = start_rollnoise(ws, {"road", "sine.toml", "--length", "40", "--lines", "20", "--out", "result"});
-  ASSERT_GT(pid, 0);
-  const fs::path staging = ws.work() / (".result.partial-" + std::to_string(pid));
-  ASSERT_TRUE(wait_until([&] { return fs::exists(staging); }, 30s)) << "never staged; stderr: " << stderr_of(ws);
-  std::this_thread::sleep_for(200ms);
-  ASSERT_TRUE(still_running(pid)) << "the run ended before the signal; make it longer";
-  const StoppedRun r = stop_with(ws, pid, SIGTERM);
-  expect_clean_stop(r, SIGTERM);
-  EXPECT_FALSE(fs::exists(staging));
-  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
-  expect_earlier_output(ws);
+  stop_verb_once_staged(ws, {"road", "sine.toml", "--length", "40", "--lines", "20", "--out", "result"}, {}, 30s,
+                        200ms, SIGTERM);
 }
 
 // The plate's receptance at 100 000 frequencies: seconds of modal sums, polled per frequency.
@@ -205,18 +215,8 @@ TEST(InterruptedRun, SigintStopsSimulateInItsLongSoundOutputAndRemovesItsStaging
                             "[radiation]\nreceivers = [\"cpx_front\"]\nmesh_around = 32\nmesh_across = 2\n"
                             "sidewall_rings = 4\nanchor_spacing = 500\ncontact_refinement = 3\n"
                             "[output]\nplots = false\nwav = true\nwav_duration = 300\n");
-  const pid_t pid = start_rollnoise(ws, {"simulate", "case.toml", "--out", "result", "--no-cache"});
-  ASSERT_GT(pid, 0);
-  const fs::path staging = ws.work() / (".result.partial-" + std::to_string(pid));
-  ASSERT_TRUE(wait_until([&] { return fs::exists(staging / "spectrum.csv"); }, 60s))
-      << "never got to its sound report; stderr: " << stderr_of(ws);
-  std::this_thread::sleep_for(100ms);
-  ASSERT_TRUE(still_running(pid)) << "the run ended before the signal; make the WAV longer";
-  const StoppedRun r = stop_with(ws, pid, SIGINT);
-  expect_clean_stop(r, SIGINT);
-  EXPECT_FALSE(fs::exists(staging));
-  EXPECT_TRUE(ws.leftovers().empty()) << ws.leftovers().front();
-  expect_earlier_output(ws);
+  stop_verb_once_staged(ws, {"simulate", "case.toml", "--out", "result", "--no-cache"}, "spectrum.csv", 60s, 100ms,
+                        SIGINT);
 }
 
 // Ctrl-C of a study under `mpirun -n 2`: mpirun (OpenMPI 4) turns the SIGINT into SIGTERM to
