@@ -12,19 +12,14 @@
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
 #include "simulation/tyre_step_outputs.hpp"
+#include "response_test_road_and_plate.hpp"
 
 namespace rollnoise {
 namespace {
 
-class Texture : public RoadSurface {
- public:
-  std::string type() const override { return "texture"; }
-  double height(double x, double y) const override {
-    if (x < 0.0) return 0.0;
-    return 1e-3 * std::sin(2 * M_PI * x / 0.07) * std::cos(2 * M_PI * y / 0.11) +
-           4e-4 * std::sin(2 * M_PI * x / 0.023 + 1.0);
-  }
-};
+using response_test::Texture;
+using response_test::test_grid;
+using response_test::test_plate;
 
 struct Outputs {
   Eigen::MatrixXd tread_velocity;
@@ -33,26 +28,8 @@ struct Outputs {
 };
 
 Outputs run(bool pipelined, const std::filesystem::path& h5) {
-  PlateParameters p;
-  p.radius = 0.3;
-  p.width = 0.16;
-  p.mass_per_area = 10.0;
-  p.tension_x = 8e4;
-  p.tension_y = 1e4;
-  p.bending_x = 6.0;
-  p.bending_y = 3.0;
-  p.bending_xy = 4.0;
-  p.foundation_stiffness = 3e6;
-  p.loss_factor = 0.1;
-  p.circumferential_modes = 64;
-  p.lateral_modes = 6;
-  const KroppPlate plate(p);
-  TyreGrid grid;
-  grid.radius = 0.3;
-  grid.width = 0.16;
-  grid.circumferential = 128;
-  grid.lateral = 6;
-  grid.window = 8;
+  const KroppPlate plate(test_plate(64));
+  const TyreGrid grid = test_grid(128, 8);
   const double speed = 20.0;
   const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);

@@ -9,48 +9,15 @@
 #include "greens/kropp_plate.hpp"
 #include "greens/tread_compliance.hpp"
 #include "response/surface_response.hpp"
+#include "response_test_road_and_plate.hpp"
 #include "road/road_surface.hpp"
 
 namespace rollnoise {
 namespace {
 
-class Texture : public RoadSurface {
- public:
-  std::string type() const override { return "texture"; }
-  double height(double x, double y) const override {
-    if (x < 0.0) return 0.0;
-    return 1e-3 * std::sin(2 * M_PI * x / 0.07) * std::cos(2 * M_PI * y / 0.11) +
-           4e-4 * std::sin(2 * M_PI * x / 0.023 + 1.0);
-  }
-};
-
-// The plate of the tests below: damped, so that the steady state leans (rolling resistance).
-PlateParameters test_plate(int orders) {
-  PlateParameters p;
-  p.radius = 0.3;
-  p.width = 0.16;
-  p.mass_per_area = 10.0;
-  p.tension_x = 8e4;
-  p.tension_y = 1e4;
-  p.bending_x = 6.0;
-  p.bending_y = 3.0;
-  p.bending_xy = 4.0;
-  p.foundation_stiffness = 3e6;
-  p.loss_factor = 0.1;
-  p.circumferential_modes = orders;
-  p.lateral_modes = 6;
-  return p;
-}
-
-TyreGrid test_grid(int around, int window) {
-  TyreGrid grid;
-  grid.radius = 0.3;
-  grid.width = 0.16;
-  grid.circumferential = around;
-  grid.lateral = 6;
-  grid.window = window;
-  return grid;
-}
+using response_test::Texture;
+using response_test::test_grid;
+using response_test::test_plate;
 
 TEST(SurfaceResponse, MatchesTheContactSolutionAtTheWindow) {
   const TyreGrid grid = test_grid(128, 24);
