@@ -65,8 +65,7 @@ PointAveragedPsd::PointAveragedPsd(std::size_t points, double sample_rate, std::
       segment_((length_ < 8 || length_ % 2 != 0)
                    ? throw std::invalid_argument("PointAveragedPsd: segment length must be even and >= 8")
                    : length_),
-      power_(length_ / 2 + 1),
-      density_(length_ / 2 + 1) {
+      power_(length_ / 2 + 1) {
   if (points_ == 0) throw std::invalid_argument("PointAveragedPsd: no points");
   for (std::vector<double>& w : weights_) {
     if (w.size() != points_) throw std::invalid_argument("PointAveragedPsd: one weight per point");
@@ -96,7 +95,6 @@ void PointAveragedPsd::push(std::span<const double> sample) {
   // order), weighted. Points are gathered kBlock at a time into contiguous segments.
   const std::size_t first_row = (pushed_ - length_) % length_;
   const std::size_t bins = power_.size();
-  const double scale = 1.0 / (sample_rate_ * segment_.window_power() * 1.0);
   for (std::size_t p0 = 0; p0 < points_; p0 += kBlock) {
     const std::size_t block = std::min(kBlock, points_ - p0);
     for (std::size_t i = 0; i < length_; ++i) {
@@ -108,14 +106,11 @@ void PointAveragedPsd::push(std::span<const double> sample) {
       if (!used_[p]) continue;
       std::fill(power_.begin(), power_.end(), 0.0);
       segment_.add_power(gathered_.data() + b * length_, power_);
-      for (std::size_t k = 0; k < bins; ++k) {
-        const bool unpaired = k == 0 || k == bins - 1;
-        density_[k] = power_[k] * ((unpaired ? 1.0 : 2.0) * scale);
-      }
+      segment_.to_one_sided_density(power_, sample_rate_, 1);
       for (std::size_t a = 0; a < weights_.size(); ++a) {
         const double w = weights_[a][p];
         if (w == 0.0) continue;
-        for (std::size_t k = 0; k < bins; ++k) sums_[a][k] += w * density_[k];
+        for (std::size_t k = 0; k < bins; ++k) sums_[a][k] += w * power_[k];
       }
     }
   }

@@ -69,7 +69,7 @@ class PointAveragedPsd {
   std::vector<std::vector<double>> weights_;
   std::vector<char> used_;  // per point: a positive weight in some average
   WelchSegment segment_;
-  std::vector<double> power_, density_;  // one segment's |X|² and density (scratch)
+  std::vector<double> power_;  // one segment's |X|², then its density (scratch)
   static constexpr std::size_t kBlock = 16;  // points gathered at a time (16 × N floats)
   std::vector<float> buffer_;    // the last N samples: sample t in row t mod N, P floats a row
   std::vector<float> gathered_;  // kBlock points' segments, N floats each

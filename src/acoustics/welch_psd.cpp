@@ -51,6 +51,15 @@ void WelchSegment::transform_and_add(std::span<double> power) const {
   for (std::size_t k = 0; k < power.size(); ++k) power[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
 }
 
+void WelchSegment::to_one_sided_density(std::span<double> power, double sample_rate, std::size_t segments) const {
+  const std::size_t bins = power.size();
+  const double scale = 1.0 / (sample_rate * window_power_ * static_cast<double>(segments));
+  for (std::size_t k = 0; k < bins; ++k) {
+    const bool unpaired = k == 0 || k == bins - 1;
+    power[k] *= (unpaired ? 1.0 : 2.0) * scale;
+  }
+}
+
 PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate, std::size_t segment_length) {
   if (!(sample_rate > 0.0) || !std::isfinite(sample_rate)) {
     throw InputError("", "sample_rate", "must be a finite number > 0 (got " + format_number(sample_rate) + ")");
@@ -74,13 +83,7 @@ PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rat
   psd.segments = segments;
   psd.density.assign(bins, 0.0);
   for (std::size_t m = 0; m < segments; ++m) segment.add_power(signal.data() + m * hop, psd.density);
-  // One-sided density: the power of the negative frequencies folded onto the positive ones
-  // (factor 2), except at DC and Nyquist which have no mirror.
-  const double scale = 1.0 / (sample_rate * segment.window_power() * static_cast<double>(segments));
-  for (std::size_t k = 0; k < bins; ++k) {
-    const bool unpaired = k == 0 || k == bins - 1;
-    psd.density[k] *= (unpaired ? 1.0 : 2.0) * scale;
-  }
+  segment.to_one_sided_density(psd.density, sample_rate, segments);
   return psd;
 }
 

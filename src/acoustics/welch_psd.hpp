@@ -56,6 +56,10 @@ class WelchSegment {
     for (std::size_t i = 0; i < n_; ++i) in_.get()[i] = window_[i] * static_cast<double>(x[i]);
     transform_and_add(power);
   }
+  // Turns Σ |X[k]|² over `segments` segments into the one-sided density (per Hz) in place: the
+  // power of the negative frequencies folded onto the positive ones (factor 2), except at DC
+  // and Nyquist, which have no mirror.
+  void to_one_sided_density(std::span<double> power, double sample_rate, std::size_t segments) const;
 
  private:
   void transform_and_add(std::span<double> power) const;
