@@ -198,11 +198,7 @@ void TyreStepOutputs::take(const ContactStep& step) {
       }
     });
   }
-  if (!settings_.tread_sampling) {
-    respond(step.index, step.force);
-    return;
-  }
-  if (sampling_.rows() > 0) {
+  if (!settings_.tread_sampling || sampling_.rows() > 0) {  // no radiating body, or it is known
     respond(step.index, step.force);
     return;
   }
