@@ -36,10 +36,12 @@ class CancellationToken {
   // outlive the token.
   explicit CancellationToken(const std::atomic<int>& flag) noexcept : flag_(&flag) {}
 
-  bool cancelled() const noexcept { return flag_->load(std::memory_order_relaxed) != 0; }
+  bool cancelled() const noexcept { return signal_number() != 0; }
+  // The signal that stops the run, 0 while it may go on.
+  int signal_number() const noexcept { return flag_->load(std::memory_order_relaxed); }
   // Throws Interrupted when cancelled.
   void throw_if_cancelled() const {
-    if (const int signal_number = flag_->load(std::memory_order_relaxed)) throw Interrupted(signal_number);
+    if (const int signal = signal_number()) throw Interrupted(signal);
   }
 
  private:

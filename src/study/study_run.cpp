@@ -187,13 +187,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
     work();
   }
   // A signal after the last case: the results are not written either (the finished cases are).
-  if (!interrupted_by) {
-    try {
-      cancel.throw_if_cancelled();
-    } catch (const Interrupted& stopped) {
-      interrupted_by = stopped.signal_number();
-    }
-  }
+  if (!interrupted_by) interrupted_by = cancel.signal_number();
   // Every rank gets here, stopped or not, before the gather: a rank that threw at once would
   // leave the others waiting in the gather (and then in MPI_Finalize) until the watchdog ended
   // them. If any rank was stopped, the whole study is (under mpirun every rank gets the
