@@ -6,6 +6,7 @@
 
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
+#include "core/fftw_plan.hpp"
 
 namespace rollnoise {
 
@@ -97,7 +98,9 @@ int circumferential_points_for_band(double band_top, double circumference, doubl
   const double needed = steps_needed(band_top, circumference, speed);
   const double half = std::ceil(0.5 * needed * (1.0 - 1e-12));
   if (!(half < 1e9)) throw std::invalid_argument("circumferential_points_for_band: the grid would be too large");
-  return 2 * static_cast<int>(half);
+  // Rounded up to a length FFTW transforms fast: every step transforms the belt around the tyre
+  // (the modal engines and the response stage), and a finer grid only carries more of the band.
+  return static_cast<int>(next_fftw_fast_length(2 * static_cast<long>(half), true));
 }
 
 int substeps_for_band(double band_top, double dx, double speed) {

@@ -161,8 +161,8 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
   write_plot(dir, "pressure_map", map.str());
 }
 
-// Cells around the tyre: as given, or (by default) the least even count that lets one step per
-// cell carry the band_top band (rolling_settings.hpp), and never fewer than the model's orders
+// Cells around the tyre: as given, or (by default) the least even FFT-friendly count that lets one
+// step per cell carry the band_top band (rolling_settings.hpp), and never fewer than the model's orders
 // need (2·M) nor than the paper's 512.
 int circumferential_points(const TyreRollingSettings& settings, const RollingTyreModel& model,
                            const ConfigTable& rolling) {

@@ -45,7 +45,7 @@ std::optional<ContactFields> contact_fields_from(const std::string& name);
 const char* to_string(ContactFields fields);
 
 // The default decimation of the belt's velocity in contact.h5: block means of this many cells
-// around (15.6 mm at 1016 cells, the 5 kHz grid at 80 km/h) by this many across (0: the whole
+// around (15.5 mm at 1024 cells, the 5 kHz grid at 80 km/h) by this many across (0: the whole
 // width). A block mean is what a coarser mesh sees of the field (as the radiation's coarser
 // meshes take area means of the finer cells), so nothing aliases into it. Across the whole
 // width: the belt's lateral mean is what radiates best (its lowest lateral order), and it keeps

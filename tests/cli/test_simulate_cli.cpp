@@ -447,8 +447,8 @@ std::vector<Edit> quick_radiation() {
 }
 
 // Issue 10 §3: by default (band_top = 5000) the grid is made fine enough that one step per cell
-// carries the third octaves up to 5 kHz: at 130 km/h, 626 cells (rolling_settings.hpp), no
-// sub-steps, a Nyquist frequency of 5.68 kHz, the radiated band to the 5 kHz band's upper edge
+// carries the third octaves up to 5 kHz: at 130 km/h, 630 cells (rolling_settings.hpp: the least
+// count, 626, rounded up to a fast transform length), no sub-steps, a Nyquist frequency of 5.73 kHz, the radiated band to the 5 kHz band's upper edge
 // (5623 Hz), and spectrum.csv and budget.csv to 5 kHz.
 TEST(SimulateCli, PlateTyreGridCarriesTheBandTo5kHzByDefault) {
   Workspace ws;
@@ -463,11 +463,11 @@ TEST(SimulateCli, PlateTyreGridCarriesTheBandTo5kHzByDefault) {
   ASSERT_EQ(r.status, 0) << describe(r);
   const fs::path out = ws.path("tyre");
   const nlohmann::json summary = read_json(out / "summary.json");
-  EXPECT_EQ(summary["grid"]["points_circumferential"].get<int>(), 626) << summary["grid"].dump();
+  EXPECT_EQ(summary["grid"]["points_circumferential"].get<int>(), 630) << summary["grid"].dump();
   EXPECT_EQ(summary["settings"]["substeps"].get<int>(), 1) << summary["settings"].dump();
   EXPECT_NEAR(summary["settings"]["band_top_hz"].get<double>(), 5000.0, 1e-9);
-  // v/(2·dx) = 36.111·626/(2·2π·0.316) = 5692.6 Hz.
-  EXPECT_NEAR(summary["settings"]["contact_nyquist_hz"].get<double>(), 5692.6, 1.0);
+  // v/(2·dx) = 36.111·630/(2·2π·0.316) = 5729.0 Hz.
+  EXPECT_NEAR(summary["settings"]["contact_nyquist_hz"].get<double>(), 5729.0, 1.0);
   EXPECT_NEAR(summary["radiation"]["band_hz"][1].get<double>(), 5623.4, 0.1);
   EXPECT_EQ(last_bands(out), std::make_pair(std::string("5000"), std::string("5000")));
 }
