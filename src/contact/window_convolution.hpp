@@ -6,12 +6,19 @@
 // length 2W − 1 along x, done by FFT (FFTW, planned once) on a zero-padded length N ≥ 2W − 1:
 // O(L·N log N + L²·N) operations on a kernel of L²·(N/2 + 1) complex values that stays in cache,
 // instead of streaming the (W·L)² dense matrix. Nothing is allocated per product.
-#include <complex>
+//
+// The L²·(N/2 + 1) complex multiply-adds are most of a product's cost, so they are done on
+// split real and imaginary arrays (they vectorise, where interleaved std::complex does not), and
+// for a tyre symmetric about its centre line (G(j_p, j_q) = G(L−1−j_p, L−1−j_q) along x, checked
+// to round-off) on the rows' even and odd combinations z_j ± z_{L−1−j}, which do not couple:
+// two blocks of about L/2 rows, half the multiply-adds (the classical even/odd reduction of a
+// centrosymmetric matrix, Cantoni & Butler, Linear Algebra Appl. 13 (1976) 275–288).
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "core/real_fft_batch.hpp"
+#include "core/fftw_plan.hpp"
 
 namespace rollnoise {
 
@@ -25,12 +32,26 @@ class WindowConvolution {
 
   int window() const noexcept { return window_; }
   int lateral() const noexcept { return lateral_; }
+  // Whether the even/odd reduction of a laterally symmetric G is used.
+  bool lateral_symmetry() const noexcept { return folded_; }
 
  private:
-  int window_, lateral_, length_;
-  RealFftBatch in_, out_;
-  // K̂(k, j_p, j_q) at kernel_[(j_p·L + j_q)·(N/2 + 1) + k], divided by N (FFTW's c2r is unnormalised).
-  std::vector<std::complex<double>> kernel_;
+  struct FftwFree {
+    void operator()(void* p) const noexcept { fftw_free(p); }
+  };
+  using Buffer = std::unique_ptr<double, FftwFree>;
+  // Spectra of `rows` rows, b bins each (padded to `stride_`), real and imaginary apart.
+  double* re(double* spectrum, int row) const noexcept { return spectrum + static_cast<std::size_t>(row) * stride_; }
+  void multiply_block(int offset, int size, const double* kernel_re, const double* kernel_im);
+
+  int window_, lateral_, length_, bins_, stride_;
+  bool folded_ = false;  // rows as even/odd combinations
+  int even_ = 0;         // rows in the even block (the odd block follows: lateral_ − even_)
+  Buffer field_, spectrum_;                    // L rows of N values / of N/2 + 1 interleaved bins
+  Buffer in_re_, in_im_, out_re_, out_im_;     // the spectra split, `stride_` bins a row
+  Buffer kernel_re_, kernel_im_;               // per block, row-major (j_p, j_q), `stride_` bins each, divided by N
+  std::size_t odd_kernel_ = 0;                 // where the odd block's kernel starts
+  std::unique_ptr<FftwPlan> forward_, backward_;
 };
 
 }  // namespace rollnoise

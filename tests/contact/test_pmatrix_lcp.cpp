@@ -247,6 +247,36 @@ TEST(WindowConvolution, EqualsTheDenseProductOfATranslationInvariantMatrix) {
   }
 }
 
+TEST(WindowConvolution, FoldsALaterallySymmetricMatrixIntoEvenAndOddRowsAndLeavesOthersWhole) {
+  // Rows that couple by more than their distance (a tyre stiffer at its shoulders), with the lag
+  // along x: symmetric about the centre line, or (with the tilt) not.
+  for (const double tilt : {0.0, 0.05})
+    for (const Window w : {Window{33, 8}, Window{20, 7}, Window{9, 2}}) {
+      const auto kernel = [&](int dx, int ja, int jb) {
+        const double centre = ja + jb - (w.lateral - 1.0);
+        return (dx == 0 && ja == jb ? 3.0 : 0.0) +
+               std::exp(-std::abs(dx) / 3.0 - std::abs(ja - jb) / 2.0) * (1.0 + 0.1 * centre * centre + tilt * ja) *
+                   (1.0 + 0.15 * std::tanh(0.5 * dx));
+      };
+      Eigen::MatrixXd m(w.points(), w.points());
+      for (int ja = 0; ja < w.lateral; ++ja)
+        for (int ia = 0; ia < w.length; ++ia)
+          for (int jb = 0; jb < w.lateral; ++jb)
+            for (int ib = 0; ib < w.length; ++ib) m(w.index(ia, ja), w.index(ib, jb)) = kernel(ia - ib, ja, jb);
+      WindowConvolution product(m, w.length, w.lateral);
+      EXPECT_EQ(product.lateral_symmetry(), tilt == 0.0) << w.length << " x " << w.lateral;
+      std::mt19937_64 rng(23);
+      Eigen::VectorXd y;
+      for (int trial = 0; trial < 3; ++trial) {
+        const Eigen::VectorXd z = random_vector(w.points(), rng);
+        product.apply(z, y);
+        const Eigen::VectorXd expected = m * z;
+        EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff())
+            << w.length << " x " << w.lateral << ", tilt " << tilt;
+      }
+    }
+}
+
 TEST(PMatrixLcp, WellConditionedSymmetricStepsByConjugateGradientsMatchTheFactor) {
   // A symmetric, strongly diagonally dominant window matrix (a Winkler tread under a belt): the
   // solver takes conjugate gradients with FFT products, and must give the factor's answers.
