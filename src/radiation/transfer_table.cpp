@@ -75,4 +75,18 @@ Eigen::MatrixXcd TransferTable::reduced_at(double f) const {
   return t;
 }
 
+void TransferTable::reduced_at(double f, Eigen::MatrixXcd& out) const {
+  if (!(f >= anchors_.front() && f <= anchors_.back())) {
+    throw std::out_of_range("transfer table: frequency outside the anchors");
+  }
+  const auto upper = std::lower_bound(anchors_.begin(), anchors_.end(), f);
+  const auto i = static_cast<std::size_t>(upper - anchors_.begin());
+  if (*upper == f) {
+    out = reduced_[i];
+  } else {
+    const double w = (f - anchors_[i - 1]) / (anchors_[i] - anchors_[i - 1]);
+    out = (1.0 - w) * reduced_[i - 1] + w * reduced_[i];  // coefficient-wise: no temporary
+  }
+}
+
 }  // namespace rollnoise

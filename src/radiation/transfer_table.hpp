@@ -33,6 +33,9 @@ class TransferTable {
   Eigen::MatrixXcd at(double frequency_hz) const;
   // The same with the propagation delay left out, T·e^{iωτ}: the transfer to retarded time.
   Eigen::MatrixXcd reduced_at(double frequency_hz) const;
+  // The same into `out` (resized to R × M if it is not), without allocating when it is: for a
+  // caller that takes many bins in turn (TyreRadiationStream's blocks).
+  void reduced_at(double frequency_hz, Eigen::MatrixXcd& out) const;
   const Eigen::VectorXd& delays() const noexcept { return delay_; }
 
   const std::vector<double>& anchors() const noexcept { return anchors_; }
