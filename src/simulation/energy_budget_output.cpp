@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -117,8 +118,15 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TextureUnderContact&
   return b;
 }
 
+std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& mesh, double sample_rate,
+                                                         std::size_t segment_length) {
+  const auto tread = static_cast<std::size_t>(mesh.tread_points);
+  std::vector<double> areas(mesh.areas.data(), mesh.areas.data() + tread);
+  return std::make_unique<PointAveragedPsd>(tread, sample_rate, segment_length, std::vector<std::vector<double>>{areas});
+}
+
 nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget, const RadiatedSound& sound,
-                                   const Eigen::MatrixXd& tread_velocity, const TyreSurfaceMesh& mesh,
+                                   const PointAveragedPsd& radiating, const TyreSurfaceMesh& mesh,
                                    double tyre_radius, const Medium& medium, const std::vector<Receiver>& receivers,
                                    const std::vector<BandSpectrum>& spectra, bool plots) {
   const std::vector<FractionalOctaveBand>& bands = budget.bands;
@@ -129,15 +137,8 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
                 bands);
   // The radiating velocity: the mesh's tread cells (contact cells silenced), area-weighted.
   const auto tread = static_cast<std::size_t>(mesh.tread_points);
-  std::vector<double> areas(mesh.areas.data(), mesh.areas.data() + tread);
   double area = 0.0;
-  for (double a : areas) area += a;
-  PointAveragedPsd radiating(tread, budget.sample_rate, budget.segment_length, {areas});
-  std::vector<double> row(tread);
-  for (Eigen::Index n = 0; n < tread_velocity.rows(); ++n) {
-    for (std::size_t p = 0; p < tread; ++p) row[p] = tread_velocity(n, static_cast<Eigen::Index>(p));
-    radiating.push(row);
-  }
+  for (std::size_t p = 0; p < tread; ++p) area += mesh.areas(static_cast<Eigen::Index>(p));
   const std::vector<double> v2_radiating = band_mean_squares_from_psd(radiating.average(0), bands);
 
   // Receivers: their band levels (spectrum.csv) where every receiver has the band.

@@ -9,6 +9,7 @@
 // this file gathers them from the stages of one run and writes them.
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,11 +63,18 @@ TyreBudget tyre_budget(const TyreContactTrace& trace, const TextureUnderContact&
                        const PointAveragedPsd& belt_psd, double speed, double sample_rate,
                        std::vector<FractionalOctaveBand> bands, double contact_stiffness);
 
+// The PSD of the radiating velocity, the budget's "v2_radiating" line: the Welch PSD of each of
+// the mesh's tread cells (samples pushed one at a time, tread_points each: the radiation stage's
+// input, contact cells silenced), averaged with the cells' areas as weights. It takes the
+// samples as the run makes them, so a run need not keep them (issue 13).
+std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& mesh, double sample_rate,
+                                                         std::size_t segment_length);
+
 // Adds the radiation lines and writes budget.csv. tyre_radius (m): of the pulsating cylinder
 // of the σ estimate; the piston has the tread's area. (and budget.gp/png when `plots`). Returns the
 // summary entry "energy_budget" (file name, bands, settings of the estimates).
 nlohmann::json write_energy_budget(const std::filesystem::path& dir, const TyreBudget& budget,
-                                   const RadiatedSound& sound, const Eigen::MatrixXd& tread_velocity,
+                                   const RadiatedSound& sound, const PointAveragedPsd& radiating,
                                    const TyreSurfaceMesh& mesh, double tyre_radius, const Medium& medium,
                                    const std::vector<Receiver>& receivers, const std::vector<BandSpectrum>& spectra,
                                    bool plots);

@@ -1,5 +1,6 @@
 #include "simulation/run_size.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace rollnoise {
@@ -36,10 +37,12 @@ RunEstimate estimate_tyre_run(const TyreRunSize& z, const std::string& source) {
   const std::string keys =
       "[rolling] duration, band_top, contact_window, points_lateral, points_circumferential, [output] fields";
   // Memory: per step, the totals (six doubles, two counts), the road's column means, and the
-  // belt's velocity on the radiation mesh, about as many points as the belt row by row.
+  // belt's velocity on the radiation mesh, about as many points as the belt row by row: the
+  // whole record, or when streamed one block of it and the block's spectra (about as large).
+  const std::uint64_t radiating_rows = z.radiation_block > 0 ? 2 * std::min(z.radiation_block, z.samples) : z.samples;
   e.memory_bytes = checked_sum({checked_product({z.samples, 64}, source, keys),
                                 checked_product({z.samples, z.window_columns, 8}, source, keys),
-                                z.radiating ? checked_product({z.samples, z.circumferential, 8}, source, keys) : 0},
+                                z.radiating ? checked_product({radiating_rows, z.circumferential, 8}, source, keys) : 0},
                                source, keys);
   // Disk: contact.h5 (floats) and the WAVs.
   std::uint64_t fields_per_step = 0;

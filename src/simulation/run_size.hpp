@@ -24,7 +24,8 @@ struct TyreRunSize {
   std::uint64_t window_columns = 0;   // Nw
   std::uint64_t lateral = 0;          // the belt, Ny × Nθ
   std::uint64_t circumferential = 0;
-  bool radiating = false;             // whether the tread velocity is kept for the radiation
+  bool radiating = false;             // whether the tread velocity goes to the radiation
+  std::uint64_t radiation_block = 0;  // samples of it held at once when streamed (0: the whole record)
   std::uint64_t receivers = 0;        // WAV files
   std::uint64_t audio_frames = 0;     // of each
   ContactFields fields = ContactFields::contact;

@@ -244,6 +244,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   size.lateral = static_cast<std::uint64_t>(grid.lateral);
   size.circumferential = static_cast<std::uint64_t>(grid.circumferential);
   size.radiating = sound.enabled;
+  // A run longer than a block streams the tread velocity through the radiation (issue 13).
+  const bool stream_sound = sound.enabled && TyreSoundStream::wanted(steps + 1, 1.0 / dt);
+  size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;
   size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;
   size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
   size.fields = fields;
@@ -284,6 +287,18 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   sound.cache_folder = options.cache;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
                                       settings.static_load, {}, {}, belt_psd.get(), {}};
+  // A long run's radiation takes the tread velocity as the run makes it, in blocks, instead of
+  // the record after the run (tyre_sound.hpp): the memory stays flat in the run's length. With
+  // the energy budget (the plate's estimates), the stream also gathers the radiating velocity's
+  // PSD, over the budget's Welch segment.
+  std::unique_ptr<TyreSoundStream> sound_stream;
+  if (stream_sound) {
+    const std::size_t budget_segment =
+        belt_psd && model.plate && model.tread ? welch_segment_for(samples, budget_max_segment) : 0;
+    sound_stream = std::make_unique<TyreSoundStream>(sound, samples, 1.0 / dt, budget_segment,
+                                                     fs::path(file.path()).filename().string(), options.progress);
+    step_outputs.tread_sink = [&stream = *sound_stream](std::span<const double> v) { stream.push(v); };
+  }
   if (sound.enabled) {
     // The belt onto the radiation's input mesh (the finest of its bands' meshes,
     // tyre_radiation.hpp), the tyre deformed as it rolls (deform_radiating_body).
@@ -401,9 +416,11 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     }
     budget_written = budget != nullptr;
     stages.lap("energy_budget");
-    const nlohmann::json heard = write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed,
-                                                  fs::path(file.path()).filename().string(), plots, budget.get(),
-                                                  options.progress);
+    const std::string source = fs::path(file.path()).filename().string();
+    const nlohmann::json heard =
+        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, plots, budget.get())
+                     : write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed, source,
+                                        plots, budget.get(), options.progress);
     stages.skip();
     for (const auto& [key, value] : heard.items())
       if (key != "sound_stage_times_s") summary[key] = value;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "acoustics/band_power.hpp"
 #include "acoustics/fractional_octave_bands.hpp"
@@ -19,6 +20,7 @@
 #include "core/output_directory.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
+#include "radiation/radiation_cache.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/sound_report.hpp"
 #include "simulation/stage_times.hpp"
@@ -129,23 +131,21 @@ std::string receivers_outside_tyre(const TyreSoundSettings& settings) {
   return {};
 }
 
-nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
-                                const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget, bool progress) {
-  const auto started = std::chrono::steady_clock::now();
-  StageTimes stages;
+namespace {
+
+std::unique_ptr<TyreRadiation> make_radiation(const TyreSoundSettings& settings) {
   Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
   for (std::size_t r = 0; r < settings.receivers.size(); ++r)
     positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
-  const TyreRadiation radiation(settings.radiation, positions);
-  // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
-  ProgressReporter bar("radiation " + source, radiation.anchors(sample_rate).size(), {}, progress);
-  std::optional<RadiationCache> cache;
-  if (settings.cache_folder) cache.emplace(*settings.cache_folder);
-  const RadiatedSound sound = radiation.radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
-  bar.finish();
-  const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  stages.lap("radiation");
+  return std::make_unique<TyreRadiation>(settings.radiation, positions);
+}
+
+// The outputs from the radiation stage's results, whichever way it ran. radiating: the PSD of the
+// radiating velocity (with a budget); radiation_seconds: the stage's time.
+nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings& settings, const TyreRadiation& radiation,
+                                    const RadiatedSound& sound, const PointAveragedPsd* radiating, double radiation_seconds,
+                                    double sample_rate, double speed, const std::string& source, bool plots,
+                                    const TyreBudget* budget, StageTimes& stages) {
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
   const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);
 
@@ -180,7 +180,8 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   result["sound_power"] = write_sound_power(dir, sound, highest_band, plots);
   stages.lap("sound_power");
   if (budget) {
-    result["energy_budget"] = write_energy_budget(dir, *budget, sound, tread_velocity, radiation.mesh(),
+    if (!radiating) throw std::logic_error("write_tyre_sound: a budget without the radiating velocity's PSD");
+    result["energy_budget"] = write_energy_budget(dir, *budget, sound, *radiating, radiation.mesh(),
                                                   settings.radiation.mesh.radius, settings.radiation.medium,
                                                   settings.receivers, spectra, plots);
     stages.lap("energy_budget_output");
@@ -260,6 +261,84 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   stages.lap("sound_summary");
   result["sound_stage_times_s"] = stages.json();  // tyre_simulation.cpp folds it into stage_times_s
   return result;
+}
+
+}  // namespace
+
+nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
+                                const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
+                                const std::string& source, bool plots, const TyreBudget* budget, bool progress) {
+  const auto started = std::chrono::steady_clock::now();
+  StageTimes stages;
+  const std::unique_ptr<TyreRadiation> radiation = make_radiation(settings);
+  // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
+  ProgressReporter bar("radiation " + source, radiation->anchors(sample_rate).size(), {}, progress);
+  std::optional<RadiationCache> cache;
+  if (settings.cache_folder) cache.emplace(*settings.cache_folder);
+  const RadiatedSound sound = radiation->radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
+  bar.finish();
+  const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  stages.lap("radiation");
+  std::unique_ptr<PointAveragedPsd> radiating;
+  if (budget) {
+    radiating = radiating_velocity_psd(radiation->mesh(), budget->sample_rate, budget->segment_length);
+    std::vector<double> row(static_cast<std::size_t>(tread_velocity.cols()));
+    for (Eigen::Index n = 0; n < tread_velocity.rows(); ++n) {
+      for (std::size_t p = 0; p < row.size(); ++p) row[p] = tread_velocity(n, static_cast<Eigen::Index>(p));
+      radiating->push(row);
+    }
+    stages.lap("energy_budget_output");
+  }
+  return write_radiated_sound(dir, settings, *radiation, sound, radiating.get(), radiation_seconds, sample_rate, speed, source,
+                              plots, budget, stages);
+}
+
+bool TyreSoundStream::wanted(std::size_t samples, double sample_rate) {
+  return samples > TyreRadiationStream::block_samples(sample_rate);
+}
+
+TyreSoundStream::TyreSoundStream(const TyreSoundSettings& settings, std::size_t samples, double sample_rate,
+                                 std::size_t budget_segment, std::string source, bool progress)
+    : settings_(settings),
+      samples_(samples),
+      sample_rate_(sample_rate),
+      budget_segment_(budget_segment),
+      source_(std::move(source)),
+      progress_(progress) {}
+
+TyreSoundStream::~TyreSoundStream() = default;
+
+void TyreSoundStream::push(std::span<const double> tread_velocity) {
+  const auto started = std::chrono::steady_clock::now();
+  if (!stream_) {
+    // The first sample: the radiating body is known (the caller set the settings' deformation).
+    radiation_ = make_radiation(settings_);
+    if (settings_.cache_folder) cache_ = std::make_unique<RadiationCache>(*settings_.cache_folder);
+    ProgressReporter bar("radiation " + source_, radiation_->anchors(sample_rate_).size(), {}, progress_);
+    stream_ = std::make_unique<TyreRadiationStream>(*radiation_, static_cast<Eigen::Index>(tread_velocity.size()), samples_,
+                                                    sample_rate_, &bar, cache_.get());
+    bar.finish();
+    if (budget_segment_ > 0) radiating_ = radiating_velocity_psd(radiation_->mesh(), sample_rate_, budget_segment_);
+  }
+  stream_->push(tread_velocity);
+  if (radiating_) radiating_->push(tread_velocity);
+  busy_ += std::chrono::steady_clock::now() - started;
+}
+
+nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream, double speed,
+                                const std::string& source, bool plots, const TyreBudget* budget) {
+  if (!stream.stream_) throw std::logic_error("write_tyre_sound: nothing was pushed to the radiation stream");
+  const auto started = std::chrono::steady_clock::now();
+  StageTimes stages;
+  const RadiatedSound sound = stream.stream_->finish();  // the last block
+  stages.lap("radiation");
+  // The stage ran while the run went: its time is that of the pushes and of the last block.
+  const double radiation_seconds =
+      std::chrono::duration<double>(stream.busy_ + (std::chrono::steady_clock::now() - started)).count();
+  if (budget && budget->segment_length != stream.budget_segment_)
+    throw std::logic_error("write_tyre_sound: the budget's Welch segment is not the stream's");
+  return write_radiated_sound(dir, settings, *stream.radiation_, sound, stream.radiating_.get(), radiation_seconds,
+                              stream.sample_rate_, speed, source, plots, budget, stages);
 }
 
 }  // namespace rollnoise

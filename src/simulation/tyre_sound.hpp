@@ -2,8 +2,12 @@
 // The sound of a rolling tyre run: radiation from the belt's surface velocity to the receivers
 // (src/radiation), their spectra and levels (sound_report.hpp), calibrated WAV files at an audio
 // rate (src/audio), a pass-by at the SPB microphone, and the radiated sound power.
+#include <chrono>
+#include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +20,9 @@
 namespace rollnoise {
 
 class ConfigTable;
+class PointAveragedPsd;
+class ProgressReporter;
+class RadiationCache;
 struct TyreBudget;
 
 struct TyreSoundSettings {
@@ -53,5 +60,51 @@ nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoun
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
                                 const std::string& source, bool plots, const TyreBudget* budget = nullptr,
                                 bool progress = true);
+
+// The radiation stage fed the tread velocity sample by sample as the run makes it, for a run too
+// long to keep the whole record (issue 13: samples × tread points in doubles, 3 GB for 10 s at
+// 80 km/h on the 5 kHz grid). The first push() makes the radiating body's mesh from the
+// settings (the caller has set its deformation by then: the run's mean contact patch) and solves
+// or loads the anchors' operators (radiation/tyre_radiation.hpp, TyreRadiationStream); the
+// samples are then transformed and applied in blocks, and the energy budget's PSD of the
+// radiating velocity takes them one by one. `settings` must outlive the stream.
+class TyreSoundStream {
+ public:
+  // Whether a run of `samples` at `sample_rate` goes through a stream: more samples than one
+  // block. A run within one block keeps its record and takes the whole-record transform, so its
+  // numbers stay what they were before the stream, bit for bit.
+  static bool wanted(std::size_t samples, double sample_rate);
+
+  // budget_segment: the Welch segment of the energy budget (0: no budget, no PSD). progress:
+  // a progress bar over the anchors on a terminal (between the run's own bar's updates).
+  TyreSoundStream(const TyreSoundSettings& settings, std::size_t samples, double sample_rate, std::size_t budget_segment,
+                  std::string source, bool progress);
+  ~TyreSoundStream();
+  TyreSoundStream(const TyreSoundStream&) = delete;
+  TyreSoundStream& operator=(const TyreSoundStream&) = delete;
+
+  // The next sample: the tread velocity on the radiation's input mesh (its tread points).
+  void push(std::span<const double> tread_velocity);
+
+ private:
+  friend nlohmann::json write_tyre_sound(const std::filesystem::path&, const TyreSoundSettings&, TyreSoundStream&, double,
+                                         const std::string&, bool, const TyreBudget*);
+  const TyreSoundSettings& settings_;
+  std::size_t samples_;
+  double sample_rate_;
+  std::size_t budget_segment_;
+  std::string source_;
+  bool progress_;
+  std::unique_ptr<TyreRadiation> radiation_;
+  std::unique_ptr<RadiationCache> cache_;
+  std::unique_ptr<TyreRadiationStream> stream_;
+  std::unique_ptr<PointAveragedPsd> radiating_;
+  std::chrono::steady_clock::duration busy_{};  // in push(): the stage's time
+};
+
+// write_tyre_sound for a run whose tread velocity went through `stream` (all its samples
+// pushed): the same outputs.
+nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream,
+                                double speed, const std::string& source, bool plots, const TyreBudget* budget = nullptr);
 
 }  // namespace rollnoise

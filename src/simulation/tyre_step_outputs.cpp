@@ -218,7 +218,10 @@ void TyreStepOutputs::body_known() {
   const Eigen::VectorXd widths = Eigen::Map<const Eigen::VectorXd>(patch_widths_.data(), static_cast<Eigen::Index>(patch_widths_.size()));
   sampling_ = settings_.tread_sampling(RadiatingPatch{lengths.mean(), widths.mean(), indentation_});
   if (sampling_.rows() == 0) throw std::logic_error("TyreStepOutputs: an empty tread sampling");
-  tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
+  if (settings_.tread_sink)
+    tread_row_.resize(sampling_.rows());
+  else
+    tread_velocity_.resize(static_cast<Eigen::Index>(settings_.samples), sampling_.rows());
   respond_waiting_steps();
   patch_forces_.resize(0, 0);
 }
@@ -330,7 +333,12 @@ void TyreStepOutputs::use(std::size_t index, const Eigen::Ref<const Eigen::Vecto
     radiating_ = v.reshaped();
     for (std::size_t p = 0; p < cell_under_.size(); ++p)
       if (force(static_cast<Eigen::Index>(p)) > 0.0) radiating_(cell_under_[p]) = 0.0;
-    tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
+    if (settings_.tread_sink) {
+      tread_row_.noalias() = sampling_ * radiating_;
+      settings_.tread_sink(std::span<const double>(tread_row_.data(), static_cast<std::size_t>(tread_row_.size())));
+    } else {
+      tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
+    }
   }
   if (index % substeps == 0 && index / substeps < static_cast<std::size_t>(around)) {
     const int g = ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,10 @@ struct TyreStepOutputSettings {
   // on one and what is taken from its fields on the other (the same results bit for bit); false:
   // step by step on the calling thread (the reference, for tests).
   bool pipelined = true;
+  // Set: each step's radiating velocity (tread points of the input mesh) goes to it once the
+  // radiating body is known, in step order, instead of being kept (tread_velocity() stays
+  // empty): a run too long to keep the record streams it (issue 13, TyreSoundStream).
+  std::function<void(std::span<const double>)> tread_sink;
 };
 
 class TyreStepOutputs final : public ContactStepSink {
@@ -95,7 +100,8 @@ class TyreStepOutputs final : public ContactStepSink {
 
   const TextureUnderContact& texture() const noexcept { return texture_; }
   // samples × tread points of the radiation's input mesh: the belt's velocity there, with the
-  // cells in contact left out (they are held by the road). Empty without tread_sampling.
+  // cells in contact left out (they are held by the road). Empty without tread_sampling, and
+  // with a tread_sink (which takes the rows instead).
   Eigen::MatrixXd& tread_velocity() noexcept { return tread_velocity_; }
   // The window's forces at the step of the largest total force, and that step's time.
   const Eigen::VectorXd& snapshot_force() const noexcept { return snapshot_force_; }
@@ -140,6 +146,7 @@ class TyreStepOutputs final : public ContactStepSink {
   Eigen::MatrixXd patch_forces_;  // P × steps: the forces waiting for the radiating body
   std::vector<double> patch_lengths_, patch_widths_;
   Eigen::MatrixXd tread_velocity_;
+  Eigen::VectorXd tread_row_;  // one step's, for tread_sink
   Eigen::VectorXd snapshot_force_;
   double snapshot_total_ = -1.0, snapshot_time_ = 0.0;
   std::vector<double> revolution_;

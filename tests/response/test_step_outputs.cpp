@@ -3,6 +3,8 @@
 // pipeline (issue 12); it must give what responding step by step gives, bit for bit.
 #include <cmath>
 #include <filesystem>
+#include <span>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,7 +29,9 @@ struct Outputs {
   RadiatingPatch patch;
 };
 
-Outputs run(bool pipelined, const std::filesystem::path& h5) {
+// sink: the radiating velocity handed on step by step (TyreStepOutputSettings::tread_sink, as a
+// long run streams it) instead of kept; gathered here into the same matrix.
+Outputs run(bool pipelined, const std::filesystem::path& h5, bool sink = false) {
   const KroppPlate plate(test_plate(64));
   const TyreGrid grid = test_grid(128, 8);
   const double speed = 20.0;
@@ -49,10 +53,19 @@ Outputs run(bool pipelined, const std::filesystem::path& h5) {
     return s;
   };
   step.pipelined = pipelined;
+  std::vector<std::vector<double>> rows;
+  if (sink) step.tread_sink = [&](std::span<const double> v) { rows.emplace_back(v.begin(), v.end()); };
   TyreStepOutputs outputs(rolling, std::move(step));
   simulate_rolling_tyre(rolling, local, Texture(), settings, nullptr, nullptr, &outputs);
   outputs.finish();
   out.tread_velocity = outputs.tread_velocity();
+  if (sink) {
+    EXPECT_EQ(out.tread_velocity.size(), 0);  // nothing kept
+    out.tread_velocity.resize(static_cast<Eigen::Index>(rows.size()), rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
+    for (std::size_t n = 0; n < rows.size(); ++n)
+      for (std::size_t m = 0; m < rows[n].size(); ++m)
+        out.tread_velocity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m)) = rows[n][m];
+  }
   out.psd = psd.average(0).density;
   out.revolution = outputs.revolution();
   return out;
@@ -71,6 +84,20 @@ TEST(TyreStepOutputs, PipelinedWaitingStepsEqualStepByStep) {
   ASSERT_FALSE(pipelined.revolution.empty());
   EXPECT_EQ(pipelined.revolution, reference.revolution);
   EXPECT_EQ(pipelined.patch.length, reference.patch.length);
+}
+
+// The rows handed to a tread_sink (issue 13: a long run streams them to the radiation) are the
+// record a run keeps otherwise, bit for bit, in step order.
+TEST(TyreStepOutputs, TreadSinkTakesTheRowsInOrder) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rollnoise_test_step_outputs_sink";
+  std::filesystem::create_directories(dir);
+  const Outputs kept = run(true, dir / "kept.h5");
+  const Outputs sunk = run(true, dir / "sunk.h5", true);
+  std::filesystem::remove_all(dir);
+  ASSERT_GT(kept.tread_velocity.rows(), 100);
+  ASSERT_EQ(sunk.tread_velocity.rows(), kept.tread_velocity.rows());
+  EXPECT_TRUE(sunk.tread_velocity == kept.tread_velocity);
+  EXPECT_EQ(sunk.psd, kept.psd);
 }
 
 }  // namespace
