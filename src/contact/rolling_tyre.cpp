@@ -15,6 +15,7 @@
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
 #include "contact/static_contact.hpp"
+#include "contact/tread_newton_contact.hpp"
 #include "contact/window_convolution.hpp"
 #include "core/cancellation.hpp"
 #include "core/error.hpp"
@@ -260,14 +261,22 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // The per-step solver: for a linear tread the LCP with G0's symmetric part S (the skew part
   // lagged) or, for a strongly skewed G0, with the whole G0, both by block principal pivoting
   // with a factor kept across steps (pmatrix_lcp.hpp; S is positive definite, G0 a P-matrix, so
-  // each has one solution); KINSOL for nonlinear treads.
+  // each has one solution). A nonlinear tread's step, the nonlinear complementarity problem with
+  // S, by semismooth Newton with the same FFT products (tread_newton_contact.hpp), warm-started
+  // from the steady state's compressions and then from the last step's, moved with the road as
+  // the linear tread's active set is; or by the KINSOL reference (nonlinear_tread_contact.hpp).
   std::unique_ptr<PMatrixLcpSolver> lcp;
-  std::unique_ptr<NonlinearTreadContact> springs;
-  if (nonlinear) {
-    springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  std::unique_ptr<TreadNewtonContact> springs;
+  std::unique_ptr<NonlinearTreadContact> reference_springs;
+  std::optional<ContactWindow> window;
+  if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
+  if (nonlinear && nonlinear->solver == NonlinearTreadSolver::kinsol) {
+    reference_springs =
+        std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  } else if (nonlinear) {
+    springs = std::make_unique<TreadNewtonContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent, window);
+    springs->warm_start(steady.force);
   } else {
-    std::optional<ContactWindow> window;
-    if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
     lcp = std::make_unique<PMatrixLcpSolver>(whole_g0 ? g0 : g0_symmetric, 128, window);
     std::vector<char> in_contact(static_cast<std::size_t>(points), 0);
     for (Eigen::Index p = 0; p < points; ++p) in_contact[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
@@ -354,8 +363,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0 && !springs) {
-      const std::vector<char>& last = lcp->result().basic;
+    if (n > 0 && !reference_springs) {
+      const std::vector<char>& last = lcp ? lcp->result().basic : springs->in_contact();
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -366,17 +375,24 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
                                 last[static_cast<std::size_t>(ahead)] != 0;
         shift += shifted_in != penetrates;
       }
-      if (shift < stay) lcp->relabel(shift_back, shift_invariant);
+      if (shift < stay) {
+        if (lcp) lcp->relabel(shift_back, shift_invariant);
+        else springs->relabel(shift_back);
+      }
     }
     if (lcp) std::copy(lcp->result().basic.begin(), lcp->result().basic.end(), warm.begin());
+    if (springs) std::copy(springs->in_contact().begin(), springs->in_contact().end(), warm.begin());
     clock = std::chrono::steady_clock::now();
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q).z;
+    const Eigen::VectorXd& force = lcp ? lcp->solve(q).z : springs ? springs->solve(q) : reference_springs->solve(q);
     trace.lcp_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     // u = G0·f + u⁰ = w − q + u⁰, with the gaps w = G0·f + q that the LCP solvers keep (zero in
-    // contact: the point lies on the road).
-    if (springs) {
+    // contact: the point lies on the road); for a nonlinear tread u = S·F + δ + u⁰ = gap − q + u⁰
+    // likewise, with its gap q + S·F + δ.
+    if (reference_springs) {
       deformation.noalias() = g0_symmetric * force;
-      deformation += u0 + springs->compression();
+      deformation += u0 + reference_springs->compression();
+    } else if (springs) {
+      deformation = springs->gap() - q + u0;
     } else {
       deformation = lcp->result().w - q + u0;
     }
@@ -406,9 +422,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     force_ring[ring] = force;
     deformation_ring[ring] = deformation;
     previous_force = force;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->result().iterations;
-    if (lcp)
-      for (std::size_t p = 0; p < warm.size(); ++p) trace.state_changes[n] += warm[p] != lcp->result().basic[p];
+    trace.lcp_iterations[n] = lcp ? lcp->result().iterations : springs ? springs->iterations() : reference_springs->iterations();
+    if (lcp || springs) {
+      const std::vector<char>& now = lcp ? lcp->result().basic : springs->in_contact();
+      for (std::size_t p = 0; p < warm.size(); ++p) trace.state_changes[n] += warm[p] != now[p];
+    }
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
@@ -428,6 +446,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     trace.lcp_factorisations = lcp->factorisations();
     trace.lcp_cg_iterations = lcp->cg_iterations();
   }
+  if (springs) trace.lcp_cg_iterations = springs->cg_iterations();
   if (progress) progress->finish();
   return trace;
 }
