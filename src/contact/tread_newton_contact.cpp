@@ -27,6 +27,9 @@ constexpr std::size_t kColumnUpdates = 32;
 // A point whose spring is this soft against its own structural compliance (dF/dδ·A_pp) carries
 // no force in the linearisation: a point entering the contact at δ = 0 for n > 1 (dF/dδ = 0).
 constexpr double kNegligibleSlope = 1e-14;
+// A point's violation of its sign beyond this many times the residual of Newton on the contact
+// set is taken as certain (solve_contact_set).
+constexpr double kEarlyExchange = 100.0;
 // The line search gives up below this step (after about 40 halvings).
 constexpr double kSmallestStep = 1e-12;
 
@@ -233,15 +236,18 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
       for (const Eigen::Index p : released_) delta_(p) = force_(p) = slope_(p) = 0.0;
       evaluate_gap(q);
     }
-    solve_contact_set(q, tolerance);
-    // Infeasible: a point of the set pulled into tension (δ < 0), or one off it penetrating.
+    const double residual = solve_contact_set(q, tolerance);
+    // Infeasible: a point of the set pulled into tension (δ < 0), or one off it penetrating. Left
+    // early (see solve_contact_set), only the points whose sign the residual cannot change.
+    const double threshold = residual <= tolerance ? tolerance : kEarlyExchange * residual;
     Eigen::Index infeasible = 0, last = -1;
     for (Eigen::Index p = 0; p < size; ++p) {
-      if (active_[static_cast<std::size_t>(p)] ? delta_(p) < -tolerance : gap_(p) < -tolerance) {
+      if (active_[static_cast<std::size_t>(p)] ? delta_(p) < -threshold : gap_(p) < -threshold) {
         ++infeasible;
         last = p;
       }
     }
+    if (infeasible == 0 && residual > tolerance) continue;  // cannot happen: left early for an exchange
     if (infeasible == 0) {
       // A δ_p at −round-off is a point out of contact.
       for (Eigen::Index p = 0; p < size; ++p)
@@ -258,7 +264,7 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
       }
       for (Eigen::Index p = 0; p < size; ++p) {
         char& flag = active_[static_cast<std::size_t>(p)];
-        if (flag ? delta_(p) < -tolerance : gap_(p) < -tolerance) flag = !flag;
+        if (flag ? delta_(p) < -threshold : gap_(p) < -threshold) flag = !flag;
       }
     } else {
       active_[static_cast<std::size_t>(last)] = !active_[static_cast<std::size_t>(last)];
@@ -268,14 +274,25 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
                            " exchanges (P = " + std::to_string(size) + ")");
 }
 
-void TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double tolerance) {
+double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double tolerance) {
   const Eigen::Index size = a_.rows();
   const double scale = q.cwiseAbs().maxCoeff();
   for (int iteration = 0;; ++iteration) {
-    double residual = 0.0;
-    for (Eigen::Index p = 0; p < size; ++p)
-      if (active_[static_cast<std::size_t>(p)]) residual = std::max(residual, std::abs(gap_(p)));
-    if (residual <= tolerance) return;
+    double residual = 0.0, violation = 0.0;
+    for (Eigen::Index p = 0; p < size; ++p) {
+      if (active_[static_cast<std::size_t>(p)]) {
+        residual = std::max(residual, std::abs(gap_(p)));
+        violation = std::max(violation, -delta_(p));
+      } else {
+        violation = std::max(violation, -gap_(p));
+      }
+    }
+    if (residual <= tolerance) return residual;
+    // A point whose violation is far beyond what the rest of the Newton iterations can change
+    // (the residual's effect on δ and the other gaps, through (A + C)⁻¹ and A, is of its order)
+    // leaves or joins the set whatever they do: exchange now rather than converge a set that is
+    // known to be wrong (a semismooth Newton step, taken only where its sign is certain).
+    if (violation > kEarlyExchange * residual) return residual;
     if (iteration == kMaxIterations)
       throw std::runtime_error("TreadNewtonContact: Newton did not converge in " + std::to_string(kMaxIterations) +
                                " iterations on a contact set (max |gap| = " + sci(residual) + " m, tolerance " +

@@ -92,8 +92,9 @@ class TreadNewtonContact {
   // The energy (2) at the current forces, from the gap; and its round-off level.
   double objective(const Eigen::VectorXd& q) const;
   double objective_noise(const Eigen::VectorXd& q) const;
-  // Newton on the contact set active_ (gap = 0 there, δ = 0 elsewhere) to `tolerance` (m).
-  void solve_contact_set(const Eigen::VectorXd& q, double tolerance);
+  // Newton on the contact set active_ (gap = 0 there, δ = 0 elsewhere) to `tolerance` (m), or
+  // until a point's violation of its sign is certain; returns the residual max_S |gap|.
+  double solve_contact_set(const Eigen::VectorXd& q, double tolerance);
   // Solves (4) to `tolerance` (m, max norm of its residual) on the contact set; x_ and ax_ = A·x.
   void newton_system(double tolerance);
 
