@@ -117,15 +117,30 @@ RoadFilter make_road_filter(RoadSampling sampling, double dx) {
 
 namespace {
 
+// Window point (i, j) → (i − 1, j); the last column's points leave.
+std::vector<Eigen::Index> shift_along_window(const TyreGrid& grid) {
+  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(grid.points()), -1);
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 1; i < grid.window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+      shift_back[static_cast<std::size_t>(p)] = p - 1;
+    }
+  return shift_back;
+}
+
 // Steady rolling with the nonlinear tread: the indentation d with ΣF(d) = W, where F(d) solves
 // the nonlinear complementarity problem with the steady-rolling compliance T. ΣF is continuous
 // and increasing in d: regula falsi (Illinois) inside a bracket.
-StaticContact steady_nonlinear_contact(const Eigen::MatrixXd& compliance, const Eigen::VectorXd& h, double load,
-                                       const NonlinearTread& tread, Eigen::VectorXd& compression) {
-  NonlinearTreadContact contact(compliance, tread.stiffness, tread.exponent, /*require_symmetric=*/false);
+// Each solve starts from the last one's compressions. By TreadNewtonContact (BiCGSTAB: T is
+// not symmetric; products by FFT when T depends on x_p − x_q only), or the KINSOL reference.
+template <class Contact>
+StaticContact steady_nonlinear_contact(Contact& contact, const Eigen::VectorXd& h, double load,
+                                       Eigen::VectorXd& compression) {
   const double touch = h.minCoeff();
+  Eigen::VectorXd q(h.size());
   auto excess = [&](double d) {
-    contact.solve((h.array() - d).matrix());
+    q = (h.array() - d).matrix();
+    contact.solve(q);
     return contact.force().sum() - load;
   };
   double lo = touch, f_lo = -load;
@@ -171,8 +186,20 @@ SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::Matri
   const Eigen::MatrixXd compliance = local_compliance + modes.rolling_compliance();
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd compression = Eigen::VectorXd::Zero(h.size());
-  const StaticContact contact = nonlinear ? steady_nonlinear_contact(compliance, h, load, *nonlinear, compression)
-                                          : solve_static_contact(compliance, h, load);
+  std::optional<StaticContact> solved;
+  if (!nonlinear) {
+    solved = solve_static_contact(compliance, h, load);
+  } else if (nonlinear->solver == NonlinearTreadSolver::kinsol) {
+    NonlinearTreadContact springs(compliance, nonlinear->stiffness, nonlinear->exponent, /*require_symmetric=*/false);
+    solved = steady_nonlinear_contact(springs, h, load, compression);
+  } else {
+    std::optional<ContactWindow> window;
+    if (matrix_unchanged_by(compliance, shift_along_window(grid))) window = ContactWindow{grid.window, grid.lateral};
+    TreadNewtonContact springs(compliance, nonlinear->stiffness, nonlinear->exponent, window,
+                               /*require_symmetric=*/false);
+    solved = steady_nonlinear_contact(springs, h, load, compression);
+  }
+  const StaticContact& contact = *solved;
   SteadyRolling steady;
   steady.indentation = contact.indentation;
   steady.force = contact.force;
@@ -241,13 +268,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
   const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
   const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
-  // Window point (i, j) → (i − 1, j); the last column's points leave.
-  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
-  for (int j = 0; j < grid.lateral; ++j)
-    for (int i = 1; i < grid.window; ++i) {
-      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
-      shift_back[static_cast<std::size_t>(p)] = p - 1;
-    }
+  const std::vector<Eigen::Index> shift_back = shift_along_window(grid);
   // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
   // along the window keeps its factor, and products with it are convolutions along x; checked,
   // not assumed.

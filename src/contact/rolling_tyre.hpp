@@ -108,10 +108,9 @@ struct SteadyRolling {
 };
 // A nonlinear tread (MODEL.md §4): springs F_p = k_p·δ_p^n in series with the belt, instead of a
 // linear local compliance (which must then be zero).
-// Each step is solved by semismooth Newton with FFT products (tread_newton_contact.hpp); the
-// KINSOL solver of the candidate points (nonlinear_tread_contact.hpp) is the reference that the
-// tests compare it with. The steady state is KINSOL's either way (its compliance is not
-// symmetric).
+// The steady state and each step are solved by Newton over contact sets with FFT products
+// (tread_newton_contact.hpp); the KINSOL solver of the candidate points
+// (nonlinear_tread_contact.hpp) is the reference that the tests compare it with.
 enum class NonlinearTreadSolver { newton, kinsol };
 struct NonlinearTread {
   Eigen::VectorXd stiffness;  // k_p, N/m^n per window point

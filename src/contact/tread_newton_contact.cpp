@@ -18,7 +18,7 @@ constexpr double kTolerance = 1e-13;
 // cycles, which the strict convexity of (2) makes a failure to report, not to hide.
 constexpr int kMaxIterations = 100;
 constexpr int kMaxCgIterations = 1000;
-// The inexact Newton forcing term: (4) is solved to min(kForcing, ‖gap_S‖∞/‖q‖∞) of its right
+// The inexact Newton forcing term: (3) is solved to min(kForcing, ‖gap_S‖∞/‖q‖∞) of its right
 // side, which keeps Newton's quadratic rate (Eisenstat & Walker's choice 2 with exponent 2).
 constexpr double kForcing = 0.1;
 // Points whose δ_p goes to 0 (leaving the contact set) correct the gap by A's column each, up to
@@ -43,7 +43,7 @@ std::string sci(double value) {
 }  // namespace
 
 TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
-                                       std::optional<ContactWindow> window)
+                                       std::optional<ContactWindow> window, bool require_symmetric)
     : a_(std::move(structural)), k_(std::move(stiffness)), n_(exponent) {
   const Eigen::Index size = a_.rows();
   if (a_.cols() != size)
@@ -62,7 +62,8 @@ TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::Vector
     // Conjugate gradients need A + C symmetric positive definite: A symmetric with a positive
     // diagonal is checked here, a non-positive curvature in the iterations is reported there.
     const double a_max = a_.cwiseAbs().maxCoeff();
-    if ((a_ - a_.transpose()).cwiseAbs().maxCoeff() > 1e-12 * a_max)
+    symmetric_ = (a_ - a_.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * a_max;
+    if (require_symmetric && !symmetric_)
       throw std::invalid_argument("TreadNewtonContact: the structural compliance A is not symmetric");
     if (!(a_.diagonal().minCoeff() > 0.0))
       throw std::invalid_argument("TreadNewtonContact: the structural compliance A has a diagonal entry ≤ 0");
@@ -77,7 +78,7 @@ TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::Vector
   a_diagonal_ = a_.diagonal();
   delta_ = force_ = slope_ = gap_ = Eigen::VectorXd::Zero(size);
   compliance_ = mask_ = inverse_diagonal_ = x_ = ax_ = r_ = z_ = p_ = ap_ = mp_ = shifted_ = delta_;
-  step_ = coordinate_ = previous_ = delta_;
+  step_ = coordinate_ = previous_ = shadow_ = s_ = hat_s_ = at_ = t_ = delta_;
   active_.assign(static_cast<std::size_t>(size), 0);
   in_contact_.assign(static_cast<std::size_t>(size), 0);
   released_.reserve(static_cast<std::size_t>(size));
@@ -136,15 +137,27 @@ double TreadNewtonContact::compression_of(double y, Eigen::Index p, double guess
   return std::copysign(d, y);
 }
 
-double TreadNewtonContact::objective(const Eigen::VectorXd& q) const {
-  // ½FᵀAF + qᵀF + Σ k^{−1/n}F^{1+1/n}/(1 + 1/n) with A·F = gap − q − δ and
+double TreadNewtonContact::merit(const Eigen::VectorXd& q) const {
+  if (!symmetric_) {
+    double residual = 0.0;
+    for (Eigen::Index p = 0; p < q.size(); ++p)
+      if (active_[static_cast<std::size_t>(p)]) residual = std::max(residual, std::abs(gap_(p)));
+    return residual;
+  }
+  // E = ½FᵀAF + qᵀF + Σ k^{−1/n}F^{1+1/n}/(1 + 1/n) with A·F = gap − q − δ and
   // k^{−1/n}F^{1+1/n} = F·δ: no product beyond the gap's.
   const double n = n_;
   return 0.5 * force_.dot(gap_ + q - delta_) + n / (n + 1.0) * force_.dot(delta_);
 }
 
-double TreadNewtonContact::objective_noise(const Eigen::VectorXd& q) const {
-  // The round-off of objective(): eps times the sum of its terms' magnitudes, with margin.
+double TreadNewtonContact::merit_noise(const Eigen::VectorXd& q) const {
+  // The round-off of merit(): eps times its terms' magnitudes, with margin.
+  if (!symmetric_) {
+    double largest = 0.0;
+    for (Eigen::Index p = 0; p < q.size(); ++p)
+      largest = std::max(largest, std::abs(gap_(p)) + std::abs(q(p)) + std::abs(delta_(p)));
+    return 64.0 * kEps * largest;
+  }
   double sum = 0.0;
   for (Eigen::Index p = 0; p < q.size(); ++p)
     sum += std::abs(force_(p)) * (std::abs(gap_(p)) + std::abs(q(p)) + std::abs(delta_(p)));
@@ -159,7 +172,7 @@ void TreadNewtonContact::release(Eigen::Index p) {
 
 void TreadNewtonContact::newton_system(double tolerance) {
   const Eigen::Index size = a_.rows();
-  // (4) on the contact points that carry force in the linearisation; Jacobi-preconditioned.
+  // (3) on the contact points that carry force in the linearisation; Jacobi-preconditioned.
   for (Eigen::Index p = 0; p < size; ++p) {
     const bool solved = active_[static_cast<std::size_t>(p)] && slope_(p) * a_diagonal_(p) > kNegligibleSlope;
     mask_(p) = solved ? 1.0 : 0.0;
@@ -170,11 +183,16 @@ void TreadNewtonContact::newton_system(double tolerance) {
   x_.setZero();
   ax_.setZero();
   if (r_.cwiseAbs().maxCoeff() <= tolerance) return;
+  if (symmetric_) conjugate_gradients(tolerance);
+  else bicgstab(tolerance);
+}
+
+void TreadNewtonContact::conjugate_gradients(double tolerance) {
   z_ = r_.cwiseProduct(inverse_diagonal_);
   p_ = z_;
   double rz = r_.dot(z_);
   for (int iteration = 0; iteration < kMaxCgIterations; ++iteration) {
-    multiply(p_, ap_);  // A·p at every point: the points left out of (4) need A·x too
+    multiply(p_, ap_);  // A·p at every point: the points left out of (3) need A·x too
     mp_ = (ap_ + compliance_.cwiseProduct(p_)).cwiseProduct(mask_);
     const double curvature = p_.dot(mp_);
     if (!(curvature > 0.0))
@@ -195,6 +213,54 @@ void TreadNewtonContact::newton_system(double tolerance) {
   throw std::runtime_error("TreadNewtonContact: conjugate gradients did not reach " + sci(tolerance) +
                            " m in " + std::to_string(kMaxCgIterations) + " iterations (residual " +
                            sci(r_.cwiseAbs().maxCoeff()) + " m)");
+}
+
+void TreadNewtonContact::bicgstab(double tolerance) {
+  // Right-preconditioned by K = diag(A + C) (K⁻¹ = inverse_diagonal_, zero off the mask), from
+  // x = 0; r_ holds −gap on the mask. A·K⁻¹p and A·K⁻¹s at every point accumulate A·x.
+  shadow_ = r_;
+  p_.setZero();
+  mp_.setZero();  // v = (A + C)·K⁻¹p
+  double rho_old = 1.0, alpha = 1.0, omega = 1.0;
+  const auto breakdown = [&](const char* what, int iteration) {
+    return std::runtime_error(std::string("TreadNewtonContact: BiCGSTAB broke down (") + what + " in iteration " +
+                              std::to_string(iteration) + ", residual " + sci(r_.cwiseAbs().maxCoeff()) + " m)");
+  };
+  for (int iteration = 0; iteration < kMaxCgIterations; ++iteration) {
+    const double rho = shadow_.dot(r_);
+    if (!(std::abs(rho) > 0.0)) throw breakdown("ρ = 0", iteration);
+    const double beta = (rho / rho_old) * (alpha / omega);
+    p_ = r_ + beta * (p_ - omega * mp_);
+    z_ = p_.cwiseProduct(inverse_diagonal_);
+    multiply(z_, ap_);
+    mp_ = (ap_ + compliance_.cwiseProduct(z_)).cwiseProduct(mask_);
+    const double projection = shadow_.dot(mp_);
+    if (!(std::abs(projection) > 0.0)) throw breakdown("r̂₀·v = 0", iteration);
+    alpha = rho / projection;
+    x_.noalias() += alpha * z_;
+    ax_.noalias() += alpha * ap_;
+    s_ = r_ - alpha * mp_;
+    ++cg_iterations_;
+    if (s_.cwiseAbs().maxCoeff() <= tolerance) {
+      r_ = s_;
+      return;
+    }
+    hat_s_ = s_.cwiseProduct(inverse_diagonal_);
+    multiply(hat_s_, at_);
+    t_ = (at_ + compliance_.cwiseProduct(hat_s_)).cwiseProduct(mask_);
+    const double tt = t_.squaredNorm();
+    if (!(tt > 0.0)) throw breakdown("t = 0", iteration);
+    omega = t_.dot(s_) / tt;
+    if (!(std::abs(omega) > 0.0)) throw breakdown("ω = 0", iteration);
+    x_.noalias() += omega * hat_s_;
+    ax_.noalias() += omega * at_;
+    r_ = s_ - omega * t_;
+    if (r_.cwiseAbs().maxCoeff() <= tolerance) return;
+    rho_old = rho;
+  }
+  throw std::runtime_error("TreadNewtonContact: BiCGSTAB did not reach " + sci(tolerance) + " m in " +
+                           std::to_string(kMaxCgIterations) + " iterations (residual " + sci(r_.cwiseAbs().maxCoeff()) +
+                           " m)");
 }
 
 const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
@@ -298,10 +364,10 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
                                " iterations on a contact set (max |gap| = " + sci(residual) + " m, tolerance " +
                                sci(tolerance) + " m)");
     ++iterations_;
-    const double start = objective(q);
-    // Inexact Newton: (4) to a fraction of the residual that falls with it (quadratic rate).
+    const double start = merit(q);
+    // Inexact Newton: (3) to a fraction of the residual that falls with it (quadratic rate).
     newton_system(std::max(0.5 * tolerance, residual * std::min(kForcing, residual / scale)));
-    // The step in y = δ + A_pp·F(δ): Δy = Δδ + A_pp·x with Δδ = C·x on the points of (4), and
+    // The step in y = δ + A_pp·F(δ): Δy = Δδ + A_pp·x with Δδ = C·x on the points of (3), and
     // Δδ = −gap − (A·x) from its own row, with no force change, for a point left out.
     for (Eigen::Index p = 0; p < size; ++p) {
       if (!active_[static_cast<std::size_t>(p)]) continue;
@@ -311,8 +377,9 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
     }
     // On a fixed set, with F's odd extension, (2) is strictly convex and smooth in F, and the
     // Newton step a descent direction: it must not increase (beyond its round-off), else the
-    // step is halved along the path y + α·Δy. Near the solution the full step is taken; far
-    // from it (a cold start, where the entering points take their own compressions and together
+    // step is halved along the path y + α·Δy. Without (2) (A not symmetric) max_S |gap| must
+    // fall, by the Armijo fraction 1e-4·α. Near the solution the full step is taken; far from
+    // it (a cold start, where the entering points take their own compressions and together
     // overshoot) this keeps Newton from wandering.
     for (double alpha = 1.0;; alpha *= 0.5) {
       for (Eigen::Index p = 0; p < size; ++p) {
@@ -321,9 +388,9 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
         evaluate_spring(p);
       }
       evaluate_gap(q);
-      if (objective(q) <= start + objective_noise(q)) break;
+      if (merit(q) <= (symmetric_ ? start : (1.0 - 1e-4 * alpha) * start) + merit_noise(q)) break;
       if (alpha < kSmallestStep)
-        throw std::runtime_error("TreadNewtonContact: no decrease of the energy (2) along the Newton step (max |gap| = " +
+        throw std::runtime_error("TreadNewtonContact: no decrease of the merit along the Newton step (max |gap| = " +
                                  sci(residual) + " m, tolerance " + sci(tolerance) + " m)");
     }
   }

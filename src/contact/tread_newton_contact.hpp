@@ -3,42 +3,50 @@
 // series with the structure, README "The rolling tyre"), solved fast enough for long runs.
 //
 // The problem (the same as NonlinearTreadContact's, which solves it with KINSOL and stays the
-// reference): with the structure's instantaneous compliance A (symmetric positive definite,
-// P × P) and the known part q,
+// reference): with the structure's instantaneous compliance A (P × P) and the known part q,
 //   (1)  gap = q + A·F + δ,   δ_p ≥ 0,   gap_p ≥ 0,   δ_p·gap_p = 0,   F_p = k_p·δ_p^n.
-// It is the optimality system of the strictly convex problem
-//   (2)  min_{F ≥ 0} ½FᵀAF + qᵀF + Σ_p k_p^{−1/n}·F_p^{1+1/n}/(1 + 1/n),
-// whose gradient is A·F + q + δ(F): its solution exists and is unique.
+// For a symmetric positive definite A (a time step) it is the optimality system of the
+// strictly convex problem
+//   (2)  min_{F ≥ 0} E(F) = ½FᵀAF + qᵀF + Σ_p k_p^{−1/n}·F_p^{1+1/n}/(1 + 1/n),
+// whose gradient is A·F + q + δ(F): its solution exists and is unique. For steady rolling A is
+// not symmetric (damping) but its symmetric part is positive definite, and (1) is still a
+// uniquely solvable complementarity problem (a uniform P-function).
 //
-// Method: the semismooth Newton method on
-//   (3)  Φ_p(δ) = min(δ_p, gap_p) = 0
-// (the primal–dual active set method; Hintermüller, Ito & Kunisch, SIAM J. Optim. 13 (2003)
-// 865–888). δ and gap are both lengths, so the min needs no scaling. Each iteration takes the
-// points with δ_p > gap_p as the contact set S, sets δ = 0 off S (those rows of Newton's system
-// are δ_p = 0, taken exactly), and makes one Newton step on gap_S = 0:
-//   (4)  (A + C)_SS·x_S = −gap_S,   C = diag(dδ_p/dF_p) = diag(1/(n·k_p·δ_p^{n−1})),
-// x the linearised force change (Δδ_p = C_p·x_p). A + C is symmetric positive definite and, like
-// the Winkler tread's A + diag(1/k), well conditioned by its diagonal: (4) is solved by Jacobi-
-// preconditioned conjugate gradients with the products A·x by FFT on the window
-// (window_convolution.hpp), as the linear tread's LCP is (pmatrix_lcp.hpp). Inexactly while the
-// residual is large (the forcing term of inexact Newton, Eisenstat & Walker, SIAM J. Sci.
-// Comput. 17 (1996) 16–32), to the final tolerance at the end.
+// Method. Block principal pivoting over contact sets S, as the linear tread's LCP
+// (pmatrix_lcp.cpp; Júdice & Pires 1994): on S, δ = 0 off it exactly and Newton solves gap_S = 0;
+// then the points of S pulled into tension (δ_p < 0) leave it and those off it that penetrate
+// (gap_p < 0) join it, all at once while their number falls, else one (Murty's rule). Each
+// Newton step solves
+//   (3)  (A + C)_SS·x_S = −gap_S,   C = diag(dδ_p/dF_p) = diag(1/(n·k_p·δ_p^{n−1})),
+// x the linearised force change (Δδ_p = C_p·x_p). A + C is, like the Winkler tread's
+// A + diag(1/k), well conditioned by its diagonal: (3) is solved by Jacobi-preconditioned
+// conjugate gradients (symmetric A) or BiCGSTAB (van der Vorst, SIAM J. Sci. Stat. Comput. 13
+// (1992) 631–644; steady rolling), with the products A·x by FFT on the window
+// (window_convolution.hpp) as for the linear tread. Inexactly while the residual is large (the
+// forcing term of inexact Newton, Eisenstat & Walker, SIAM J. Sci. Comput. 17 (1996) 16–32),
+// to the final tolerance at the end. A point whose sign is violated by far more than the
+// residual can change is exchanged without converging the set first (a semismooth Newton step
+// on min(δ, gap), taken only where its outcome is certain).
 //
 // dδ/dF = ∞ at F = 0 for n > 1: a point that enters the contact (δ_p = 0) has no force in the
-// linearisation (dF/dδ = 0), so it is left out of (4) and its step follows from its own row,
+// linearisation (dF/dδ = 0), so it is left out of (3) and its step follows from its own row,
 // Δδ_p = −gap_p − (A·x)_p. The step is applied in the coordinate y_p = δ_p + A_pp·F_p(δ_p)
 // (the displacement of point p under its own force; NonlinearSpringContact's coordinate), with
 // Δy_p = Δδ_p + A_pp·x_p, and δ_p = δ(y_p) by a scalar inversion: an isolated point is linear in
 // y, so Newton does not creep onto stiff springs from above as it does in δ, and an entering
-// point lands on its own exact compression.
+// point lands on its own exact compression. On S (δ may go negative there, with the odd
+// extension F(−δ) = −F(δ)) a step that raises E (symmetric A) or max_S |gap| (otherwise) beyond
+// round-off is halved along y + α·Δy: from a cold start the entering points, each at its own
+// compression, together overshoot, and Newton would otherwise wander.
 //
 // Each solve starts from the last one's compressions (or those that warm_start() or relabel()
 // set): between time steps the contact set moves by a few points, and Newton then takes a few
 // iterations. n = 1 is the linear LCP with compliance A + diag(1/k) (the Winkler tread): Newton
-// is then exact on each contact set, and the method is block principal pivoting.
+// is exact on each contact set.
 //
-// Stopping test: |Φ_p| ≤ 1e-13·‖q‖∞ at every point (the linear tread's LCP stops at the same
-// level), then δ = max(δ, 0). Nothing is allocated per solve.
+// Stopping test: max_S |gap| ≤ 1e-13·‖q‖∞ and no point off S below −1e-13·‖q‖∞ nor on S with
+// δ below it (the linear tread's LCP stops at the same level), then δ = max(δ, 0). Nothing is
+// allocated per solve.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -51,11 +59,12 @@ namespace rollnoise {
 
 class TreadNewtonContact {
  public:
-  // structural: A (P × P, symmetric positive definite); stiffness: k_p > 0 (N/m^n); exponent:
-  // n ≥ 1. window: A depends on x_p − x_q only on this window (matrix_unchanged_by checks it),
-  // and its products are done by FFT; without it, dense.
+  // structural: A (P × P, symmetric positive definite, or with require_symmetric = false any A
+  // with a positive-definite symmetric part); stiffness: k_p > 0 (N/m^n); exponent: n ≥ 1.
+  // window: A depends on x_p − x_q only on this window (matrix_unchanged_by checks it), and its
+  // products are done by FFT; without it, dense.
   TreadNewtonContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
-                     std::optional<ContactWindow> window = {});
+                     std::optional<ContactWindow> window = {}, bool require_symmetric = true);
   ~TreadNewtonContact();
   TreadNewtonContact(const TreadNewtonContact&) = delete;
   TreadNewtonContact& operator=(const TreadNewtonContact&) = delete;
@@ -75,7 +84,7 @@ class TreadNewtonContact {
   // The points with F > 0 after the last solve (or δ > 0 of the warm start, once set or moved).
   const std::vector<char>& in_contact() const noexcept { return in_contact_; }
   int iterations() const noexcept { return iterations_; }  // Newton iterations of the last solve
-  long cg_iterations() const noexcept { return cg_iterations_; }  // all solves so far
+  long cg_iterations() const noexcept { return cg_iterations_; }  // CG/BiCGSTAB, all solves so far
 
  private:
   // out = A·z (by FFT when the window is known).
@@ -89,23 +98,29 @@ class TreadNewtonContact {
   double compression_of(double y, Eigen::Index p, double guess) const;
   // Sets δ_p = 0 (and F_p = 0) at point p, keeping gap_ = q + A·F + δ.
   void release(Eigen::Index p);
-  // The energy (2) at the current forces, from the gap; and its round-off level.
-  double objective(const Eigen::VectorXd& q) const;
-  double objective_noise(const Eigen::VectorXd& q) const;
+  // What the line search must not raise: the energy (2) at the current forces (from the gap)
+  // for a symmetric A, else max_S |gap|; and its round-off level.
+  double merit(const Eigen::VectorXd& q) const;
+  double merit_noise(const Eigen::VectorXd& q) const;
   // Newton on the contact set active_ (gap = 0 there, δ = 0 elsewhere) to `tolerance` (m), or
   // until a point's violation of its sign is certain; returns the residual max_S |gap|.
   double solve_contact_set(const Eigen::VectorXd& q, double tolerance);
-  // Solves (4) to `tolerance` (m, max norm of its residual) on the contact set; x_ and ax_ = A·x.
+  // Solves (3) to `tolerance` (m, max norm of its residual) on the contact set; x_ and ax_ = A·x.
   void newton_system(double tolerance);
+  void conjugate_gradients(double tolerance);  // symmetric A
+  void bicgstab(double tolerance);             // otherwise
 
   Eigen::MatrixXd a_;
   Eigen::VectorXd k_, a_diagonal_;
   double n_;
+  bool symmetric_ = true;
   std::unique_ptr<WindowConvolution> product_;
 
   Eigen::VectorXd delta_, force_, slope_, gap_;
-  // Per solve: C's diagonal, the CG mask and preconditioner, the step x and A·x, CG's vectors.
+  // Per solve: C's diagonal, the mask of (3) and its preconditioner, the step x and A·x, and the
+  // Krylov methods' vectors.
   Eigen::VectorXd compliance_, mask_, inverse_diagonal_, x_, ax_, r_, z_, p_, ap_, mp_;
+  Eigen::VectorXd shadow_, s_, hat_s_, at_, t_;  // BiCGSTAB's r̂₀, s, K⁻¹s, A·K⁻¹s, (A + C)·K⁻¹s
   // The Newton step Δy, the coordinate y and δ it starts from (the line search's path).
   Eigen::VectorXd step_, coordinate_, previous_;
   std::vector<char> active_, in_contact_;

@@ -164,9 +164,9 @@ TEST(RollingTyre, NonlinearTreadWithExponentOneIsTheWinklerTread) {
 }
 
 TEST(RollingTyre, NonlinearTreadNewtonEqualsKinsol) {
-  // The same run with each step solved by the semismooth Newton with FFT products (the default)
-  // and by the KINSOL reference: both solve each step's problem to round-off, so the runs agree
-  // to the conditioning of the steps (README: forces within 1e-8).
+  // The same run with the steady state and each step solved by Newton over contact sets with FFT
+  // products (the default) and by the KINSOL reference: both solve each problem to round-off, so
+  // the runs agree to the conditioning of the steps (README: forces within 1e-8).
   const KroppPlate plate(small_plate(0.1));
   const TyreGrid grid = small_grid();
   const double speed = 22.2;
@@ -180,6 +180,9 @@ TEST(RollingTyre, NonlinearTreadNewtonEqualsKinsol) {
     springs.solver = NonlinearTreadSolver::newton;
     const TyreContactTrace newton = simulate_rolling_tyre(rolling, none, Bumps(), settings, nullptr, &springs);
     EXPECT_LT(reference.contact_area.minCoeff(), 0.9 * reference.contact_area.maxCoeff());  // contact comes and goes
+    // The steady state (T not symmetric: BiCGSTAB against KINSOL) and each step.
+    EXPECT_NEAR(newton.indentation, reference.indentation, 1e-10 * reference.indentation) << "n = " << exponent;
+    EXPECT_LE((newton.steady_force - reference.steady_force).cwiseAbs().maxCoeff(), 1e-8 * reference.steady_force.maxCoeff());
     EXPECT_LE((newton.force - reference.force).cwiseAbs().maxCoeff(), 1e-8 * reference.force.maxCoeff()) << "n = " << exponent;
     EXPECT_LE((newton.displacement - reference.displacement).cwiseAbs().maxCoeff(),
               1e-8 * reference.displacement.cwiseAbs().maxCoeff())

@@ -89,6 +89,31 @@ TEST(TreadNewtonContact, MatchesKinsolOnRoughPatches) {
   }
 }
 
+TEST(TreadNewtonContact, NonSymmetricComplianceMatchesKinsol) {
+  // The steady-rolling compliance: damping skews it (here by 5 % of its largest entry, with a
+  // positive-definite symmetric part); BiCGSTAB instead of CG, max |gap| as the merit.
+  std::mt19937_64 rng(13);
+  for (const double exponent : {1.0, 1.5, 2.3}) {
+    Patch patch = make_patch(9, 7, rng);
+    const Eigen::Index size = patch.q.size();
+    Eigen::MatrixXd skew(size, size);
+    for (Eigen::Index p = 0; p < size; ++p)
+      for (Eigen::Index r = 0; r < size; ++r) skew(p, r) = std::tanh(5e-3 * static_cast<double>(p - r) / 0.01);
+    patch.a += 0.05 * 1e-6 * skew;  // antisymmetric: the symmetric part stays positive definite
+    const Eigen::VectorXd stiffness = Eigen::VectorXd::Constant(size, 1e6 / std::pow(1e-4, exponent - 1.0));
+    NonlinearTreadContact reference(patch.a, stiffness, exponent, /*require_symmetric=*/false);
+    TreadNewtonContact newton(patch.a, stiffness, exponent, {}, /*require_symmetric=*/false);
+    EXPECT_THROW(TreadNewtonContact(patch.a, stiffness, exponent), std::invalid_argument);
+    const Eigen::VectorXd& expected = reference.solve(patch.q);
+    const Eigen::VectorXd& force = newton.solve(patch.q);
+    EXPECT_LE((force - expected).cwiseAbs().maxCoeff(), 1e-8 * expected.maxCoeff()) << "n = " << exponent;
+    EXPECT_LE(kkt_residual(patch.a, patch.q, force, newton.compression()), 1e-11) << "n = " << exponent;
+    // And again from there, warm, for a nearby q.
+    const Eigen::VectorXd nearby = patch.q.array() - 2e-5;
+    EXPECT_LE((newton.solve(nearby) - reference.solve(nearby)).cwiseAbs().maxCoeff(), 1e-8 * expected.maxCoeff());
+  }
+}
+
 TEST(TreadNewtonContact, ExponentOneIsTheLinearLcp) {
   // F = k·δ: gap = q + (A + diag(1/k))·F, the LCP of the Winkler tread.
   std::mt19937_64 rng(11);
