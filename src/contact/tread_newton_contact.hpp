@@ -89,6 +89,8 @@ class TreadNewtonContact {
  private:
   // out = A·z (by FFT when the window is known).
   void multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out);
+  // |δ|^{n−1} for |δ| = magnitude.
+  double lower_power(double magnitude) const;
   // force_ and slope_ (dF/dδ) from delta_ at point p, with the odd extension F(−δ) = −F(δ)
   // that Newton may visit.
   void evaluate_spring(Eigen::Index p);
@@ -113,6 +115,8 @@ class TreadNewtonContact {
   Eigen::MatrixXd a_;
   Eigen::VectorXd k_, a_diagonal_;
   double n_;
+  enum class Power { general, one_and_a_half, two_and_a_half, three };  // n − 1 by square roots
+  Power power_ = Power::general;
   bool symmetric_ = true;
   std::unique_ptr<WindowConvolution> product_;
 
