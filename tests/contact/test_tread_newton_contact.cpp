@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -26,6 +28,14 @@
 
 namespace rollnoise {
 namespace {
+
+// Recorded in the test XML (gtest --gtest_output=xml) for the measured accuracies.
+std::string sci(double value) {
+  std::ostringstream text;
+  text.precision(2);
+  text << std::scientific << value;
+  return text.str();
+}
 
 // max_p |min(δ_p, gap_p)| with gap = q + A·F + δ recomputed densely, over max|q|; and F ≥ 0.
 double kkt_residual(const Eigen::MatrixXd& a, const Eigen::VectorXd& q, const Eigen::VectorXd& force,
@@ -64,6 +74,7 @@ Patch make_patch(int nx, int ny, std::mt19937_64& rng) {
 
 TEST(TreadNewtonContact, MatchesKinsolOnRoughPatches) {
   std::mt19937_64 rng(7);
+  double worst_force = 0.0, worst_kkt = 0.0;
   for (const double exponent : {1.0, 1.5, 2.0, 2.5, 2.7, 3.0}) {
     // Soft, comparable and stiff springs against the structure (k·δ^{n−1} at δ = 0.1 mm against
     // 1/A_pp = 1e6 N/m).
@@ -80,6 +91,8 @@ TEST(TreadNewtonContact, MatchesKinsolOnRoughPatches) {
       EXPECT_LT((expected.array() > 0.0).count(), patch.q.size());
       EXPECT_LE((force - expected).cwiseAbs().maxCoeff(), 1e-8 * expected.maxCoeff())
           << "n = " << exponent << ", stiffness ×" << relative;
+      worst_force = std::max(worst_force, (force - expected).cwiseAbs().maxCoeff() / expected.maxCoeff());
+      worst_kkt = std::max(worst_kkt, kkt_residual(patch.a, patch.q, force, newton.compression()));
       EXPECT_LE(kkt_residual(patch.a, patch.q, force, newton.compression()), 1e-11)
           << "n = " << exponent << ", stiffness ×" << relative;
       EXPECT_LE((newton.gap() - (patch.q + patch.a * force + newton.compression())).cwiseAbs().maxCoeff(),
@@ -87,6 +100,8 @@ TEST(TreadNewtonContact, MatchesKinsolOnRoughPatches) {
       EXPECT_GE(newton.iterations(), 1);
     }
   }
+  RecordProperty("worst_force_difference", sci(worst_force));
+  RecordProperty("worst_kkt_residual", sci(worst_kkt));
 }
 
 TEST(TreadNewtonContact, NonSymmetricComplianceMatchesKinsol) {
@@ -185,6 +200,9 @@ TEST(TreadNewtonContact, WindowProductsMatchKinsolStepByStep) {
     }
     EXPECT_LE(worst_force, 1e-8) << "n = " << exponent;
     EXPECT_LE(worst_kkt, 1e-11) << "n = " << exponent;
+    const std::string tag = "_n" + std::to_string(static_cast<int>(10 * exponent));
+    RecordProperty("worst_force_difference" + tag, sci(worst_force));
+    RecordProperty("worst_kkt_residual" + tag, sci(worst_kkt));
     RecordProperty("newton_iterations_per_step_n" + std::to_string(static_cast<int>(10 * exponent)), iterations / 40);
     // This coarse window (29 mm cells) moves the contact by whole asperities a step: a few
     // exchanges of the contact set of a few Newton iterations each.
