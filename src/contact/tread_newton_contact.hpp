@@ -35,16 +35,17 @@
 // Δy_p = Δδ_p + A_pp·x_p, and δ_p = δ(y_p) by a scalar inversion: an isolated point is linear in
 // y, so Newton does not creep onto stiff springs from above as it does in δ, and an entering
 // point lands on its own exact compression. Better still, a point joining S starts there, at
-// δ + A_pp·F(δ) = −gap_p, so that Newton's first linearisation couples its force too. On S (δ may go negative there, with the odd
-// extension F(−δ) = −F(δ)) a step that raises E (symmetric A) or max_S |gap| (otherwise) beyond
-// round-off is halved along y + α·Δy: from a cold start the entering points, each at its own
-// compression, together overshoot, and Newton would otherwise wander.
+// δ + A_pp·F(δ) = −gap_p, so that Newton's first linearisation couples its force too. On S
+// (δ may go negative there, with the odd extension F(−δ) = −F(δ)) a step that raises E
+// (symmetric A) or max_S |gap| (otherwise) beyond round-off is halved along y + α·Δy: from a
+// cold start the entering points, each at its own compression, together overshoot, and Newton
+// would otherwise wander.
 //
 // Each solve starts from the last one's compressions (or those that warm_start() or relabel()
 // set), S from the points in contact there and those that penetrate under their forces: between
-// time steps the contact set moves by a few points, and Newton then takes a few
-// iterations. n = 1 is the linear LCP with compliance A + diag(1/k) (the Winkler tread): Newton
-// is exact on each contact set.
+// time steps the contact set moves by a few points, and Newton then takes a few iterations.
+// n = 1 is the linear LCP with compliance A + diag(1/k) (the Winkler tread): Newton is exact on
+// each contact set, up to the tolerance of (3).
 //
 // Stopping test: max_S |gap| ≤ 1e-13·‖q‖∞ and no point off S below −1e-13·‖q‖∞ nor on S with
 // δ below it (the linear tread's LCP stops at the same level), then δ = max(δ, 0). Nothing is
