@@ -44,12 +44,7 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
 // 4–5 times its coupling to the whole patch), each basic block is solved by preconditioned
 // conjugate gradients from the last solution instead: a dozen FFT products, no factorisation.
 // The factor stays the fallback, and the stopping test (residual 1e-13 of max |q|) keeps the
-// KKT conditions to round-off.
-struct ContactWindow {
-  int window = 0;   // points along x
-  int lateral = 0;  // rows across
-};
-
+// KKT conditions to round-off. (ContactWindow: window_convolution.hpp.)
 class PMatrixLcpSolver {
  public:
   // `capacity`: the most indices by which the basic set may drift from the factorised one

@@ -15,6 +15,7 @@
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
 #include "contact/static_contact.hpp"
+#include "contact/tread_newton_contact.hpp"
 #include "contact/window_convolution.hpp"
 #include "core/cancellation.hpp"
 #include "core/error.hpp"
@@ -116,15 +117,30 @@ RoadFilter make_road_filter(RoadSampling sampling, double dx) {
 
 namespace {
 
+// Window point (i, j) → (i − 1, j); the last column's points leave.
+std::vector<Eigen::Index> shift_along_window(const TyreGrid& grid) {
+  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(grid.points()), -1);
+  for (int j = 0; j < grid.lateral; ++j)
+    for (int i = 1; i < grid.window; ++i) {
+      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+      shift_back[static_cast<std::size_t>(p)] = p - 1;
+    }
+  return shift_back;
+}
+
 // Steady rolling with the nonlinear tread: the indentation d with ΣF(d) = W, where F(d) solves
 // the nonlinear complementarity problem with the steady-rolling compliance T. ΣF is continuous
 // and increasing in d: regula falsi (Illinois) inside a bracket.
-StaticContact steady_nonlinear_contact(const Eigen::MatrixXd& compliance, const Eigen::VectorXd& h, double load,
-                                       const NonlinearTread& tread, Eigen::VectorXd& compression) {
-  NonlinearTreadContact contact(compliance, tread.stiffness, tread.exponent, /*require_symmetric=*/false);
+// Each solve starts from the last one's compressions. By TreadNewtonContact (BiCGSTAB: T is
+// not symmetric; products by FFT when T depends on x_p − x_q only), or the KINSOL reference.
+template <class Contact>
+StaticContact steady_nonlinear_contact(Contact& contact, const Eigen::VectorXd& h, double load,
+                                       Eigen::VectorXd& compression) {
   const double touch = h.minCoeff();
+  Eigen::VectorXd q(h.size());
   auto excess = [&](double d) {
-    contact.solve((h.array() - d).matrix());
+    q = (h.array() - d).matrix();
+    contact.solve(q);
     return contact.force().sum() - load;
   };
   double lo = touch, f_lo = -load;
@@ -170,8 +186,20 @@ SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::Matri
   const Eigen::MatrixXd compliance = local_compliance + modes.rolling_compliance();
   const Eigen::VectorXd h = grid.undeformed_gap();
   Eigen::VectorXd compression = Eigen::VectorXd::Zero(h.size());
-  const StaticContact contact = nonlinear ? steady_nonlinear_contact(compliance, h, load, *nonlinear, compression)
-                                          : solve_static_contact(compliance, h, load);
+  std::optional<StaticContact> solved;
+  if (!nonlinear) {
+    solved = solve_static_contact(compliance, h, load);
+  } else if (nonlinear->solver == NonlinearTreadSolver::kinsol) {
+    NonlinearTreadContact springs(compliance, nonlinear->stiffness, nonlinear->exponent, /*require_symmetric=*/false);
+    solved = steady_nonlinear_contact(springs, h, load, compression);
+  } else {
+    std::optional<ContactWindow> window;
+    if (matrix_unchanged_by(compliance, shift_along_window(grid))) window = ContactWindow{grid.window, grid.lateral};
+    TreadNewtonContact springs(compliance, nonlinear->stiffness, nonlinear->exponent, window,
+                               /*require_symmetric=*/false);
+    solved = steady_nonlinear_contact(springs, h, load, compression);
+  }
+  const StaticContact& contact = *solved;
   SteadyRolling steady;
   steady.indentation = contact.indentation;
   steady.force = contact.force;
@@ -240,13 +268,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
   const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
   const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
-  // Window point (i, j) → (i − 1, j); the last column's points leave.
-  std::vector<Eigen::Index> shift_back(static_cast<std::size_t>(points), -1);
-  for (int j = 0; j < grid.lateral; ++j)
-    for (int i = 1; i < grid.window; ++i) {
-      const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
-      shift_back[static_cast<std::size_t>(p)] = p - 1;
-    }
+  const std::vector<Eigen::Index> shift_back = shift_along_window(grid);
   // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
   // along the window keeps its factor, and products with it are convolutions along x; checked,
   // not assumed.
@@ -260,14 +282,22 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // The per-step solver: for a linear tread the LCP with G0's symmetric part S (the skew part
   // lagged) or, for a strongly skewed G0, with the whole G0, both by block principal pivoting
   // with a factor kept across steps (pmatrix_lcp.hpp; S is positive definite, G0 a P-matrix, so
-  // each has one solution); KINSOL for nonlinear treads.
+  // each has one solution). A nonlinear tread's step, the nonlinear complementarity problem with
+  // S, by Newton over contact sets with the same FFT products (tread_newton_contact.hpp), warm-started
+  // from the steady state's compressions and then from the last step's, moved with the road as
+  // the linear tread's active set is; or by the KINSOL reference (nonlinear_tread_contact.hpp).
   std::unique_ptr<PMatrixLcpSolver> lcp;
-  std::unique_ptr<NonlinearTreadContact> springs;
-  if (nonlinear) {
-    springs = std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  std::unique_ptr<TreadNewtonContact> springs;
+  std::unique_ptr<NonlinearTreadContact> reference_springs;
+  std::optional<ContactWindow> window;
+  if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
+  if (nonlinear && nonlinear->solver == NonlinearTreadSolver::kinsol) {
+    reference_springs =
+        std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
+  } else if (nonlinear) {
+    springs = std::make_unique<TreadNewtonContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent, window);
+    springs->warm_start(steady.force);
   } else {
-    std::optional<ContactWindow> window;
-    if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
     lcp = std::make_unique<PMatrixLcpSolver>(whole_g0 ? g0 : g0_symmetric, 128, window);
     std::vector<char> in_contact(static_cast<std::size_t>(points), 0);
     for (Eigen::Index p = 0; p < points; ++p) in_contact[static_cast<std::size_t>(p)] = steady.force(p) > 0.0 ? 1 : 0;
@@ -354,8 +384,8 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact
     // matrix depends on x_p − x_q only, so the shifted set keeps its factor.
-    if (n > 0 && !springs) {
-      const std::vector<char>& last = lcp->result().basic;
+    if (n > 0 && !reference_springs) {
+      const std::vector<char>& last = lcp ? lcp->result().basic : springs->in_contact();
       long stay = 0, shift = 0;
       for (Eigen::Index p = 0; p < points; ++p) {
         const bool penetrates = q(p) < 0.0;
@@ -366,17 +396,24 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
                                 last[static_cast<std::size_t>(ahead)] != 0;
         shift += shifted_in != penetrates;
       }
-      if (shift < stay) lcp->relabel(shift_back, shift_invariant);
+      if (shift < stay) {
+        if (lcp) lcp->relabel(shift_back, shift_invariant);
+        else springs->relabel(shift_back);
+      }
     }
     if (lcp) std::copy(lcp->result().basic.begin(), lcp->result().basic.end(), warm.begin());
+    if (springs) std::copy(springs->in_contact().begin(), springs->in_contact().end(), warm.begin());
     clock = std::chrono::steady_clock::now();
-    const Eigen::VectorXd& force = springs ? springs->solve(q) : lcp->solve(q).z;
+    const Eigen::VectorXd& force = lcp ? lcp->solve(q).z : springs ? springs->solve(q) : reference_springs->solve(q);
     trace.lcp_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     // u = G0·f + u⁰ = w − q + u⁰, with the gaps w = G0·f + q that the LCP solvers keep (zero in
-    // contact: the point lies on the road).
-    if (springs) {
+    // contact: the point lies on the road); for a nonlinear tread u = S·F + δ + u⁰ = gap − q + u⁰
+    // likewise, with its gap q + S·F + δ.
+    if (reference_springs) {
       deformation.noalias() = g0_symmetric * force;
-      deformation += u0 + springs->compression();
+      deformation += u0 + reference_springs->compression();
+    } else if (springs) {
+      deformation = springs->gap() - q + u0;
     } else {
       deformation = lcp->result().w - q + u0;
     }
@@ -406,9 +443,11 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     force_ring[ring] = force;
     deformation_ring[ring] = deformation;
     previous_force = force;
-    trace.lcp_iterations[n] = springs ? springs->iterations() : lcp->result().iterations;
-    if (lcp)
-      for (std::size_t p = 0; p < warm.size(); ++p) trace.state_changes[n] += warm[p] != lcp->result().basic[p];
+    trace.lcp_iterations[n] = lcp ? lcp->result().iterations : springs ? springs->iterations() : reference_springs->iterations();
+    if (lcp || springs) {
+      const std::vector<char>& now = lcp ? lcp->result().basic : springs->in_contact();
+      for (std::size_t p = 0; p < warm.size(); ++p) trace.state_changes[n] += warm[p] != now[p];
+    }
     clock = std::chrono::steady_clock::now();
     engine->advance(force);
     trace.history_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
@@ -428,6 +467,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     trace.lcp_factorisations = lcp->factorisations();
     trace.lcp_cg_iterations = lcp->cg_iterations();
   }
+  if (springs) trace.lcp_cg_iterations = springs->cg_iterations();
   if (progress) progress->finish();
   return trace;
 }

@@ -73,8 +73,8 @@ struct TyreContactTrace {
   Eigen::VectorXd contact_length;  // m, extent along x of the points in contact
   Eigen::VectorXd contact_width;   // m, extent across
   Eigen::VectorXd input_power;     // W, power of the contact forces into the tyre, Σ F·u̇
-  std::vector<int> lcp_iterations;  // pivoting iterations per step (KINSOL iterations for a nonlinear tread)
-  std::vector<int> state_changes;   // points that changed state against the step's warm start (linear treads)
+  std::vector<int> lcp_iterations;  // pivoting iterations per step (Newton iterations for a nonlinear tread)
+  std::vector<int> state_changes;   // points that changed state against the step's warm start (not for KINSOL)
   ContactMatrixStructure contact_matrix;  // of G0, measured on the steady contact
   // Largest entry of the skew part of G0 over the largest of G0.
   double contact_matrix_skewness = 0.0;
@@ -92,9 +92,9 @@ struct TyreContactTrace {
   std::vector<std::string> warnings;
   double step_loop_seconds = 0.0;  // wall time of the time-step loop alone (no setup)
   double history_seconds = 0.0;    // of which in the history engine (u⁰ and the update)
-  double lcp_seconds = 0.0;        // of which in the contact problem of each step (LCP or KINSOL)
+  double lcp_seconds = 0.0;        // of which in the contact problem of each step (LCP or nonlinear)
   double sink_seconds = 0.0;       // in the ContactStepSink, not counted in step_loop_seconds
-  long lcp_factorisations = -1;    // dense factorisations of the LCP's basic block (−1: KINSOL)
+  long lcp_factorisations = -1;    // dense factorisations of the LCP's basic block (−1: a nonlinear tread)
   long lcp_cg_iterations = 0;      // conjugate-gradient iterations (a well-conditioned symmetric step)
 };
 
@@ -108,9 +108,14 @@ struct SteadyRolling {
 };
 // A nonlinear tread (MODEL.md §4): springs F_p = k_p·δ_p^n in series with the belt, instead of a
 // linear local compliance (which must then be zero).
+// The steady state and each step are solved by Newton over contact sets with FFT products
+// (tread_newton_contact.hpp); the KINSOL solver of the candidate points
+// (nonlinear_tread_contact.hpp) is the reference that the tests compare it with.
+enum class NonlinearTreadSolver { newton, kinsol };
 struct NonlinearTread {
   Eigen::VectorXd stiffness;  // k_p, N/m^n per window point
   double exponent = 1.0;      // n ≥ 1
+  NonlinearTreadSolver solver = NonlinearTreadSolver::newton;
 };
 
 // One step of a rolling run as the loop produces it, over the window (p = i + Nw·j).

@@ -22,6 +22,12 @@
 
 namespace rollnoise {
 
+// The shape of a contact window whose matrix depends on x_p − x_q only (point p = i + W·j).
+struct ContactWindow {
+  int window = 0;   // points along x
+  int lateral = 0;  // rows across
+};
+
 class WindowConvolution {
  public:
   // `g`: (W·L) × (W·L), read along its first row and column of each pair of rows.

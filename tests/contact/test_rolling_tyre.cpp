@@ -163,6 +163,34 @@ TEST(RollingTyre, NonlinearTreadWithExponentOneIsTheWinklerTread) {
   EXPECT_NEAR(hertzian.steady_force.sum(), 3200.0, 1e-9 * 3200.0);
 }
 
+TEST(RollingTyre, NonlinearTreadNewtonEqualsKinsol) {
+  // The same run with the steady state and each step solved by Newton over contact sets with FFT
+  // products (the default) and by the KINSOL reference: both solve each problem to round-off, so
+  // the runs agree to the conditioning of the steps (README: forces within 1e-8).
+  const KroppPlate plate(small_plate(0.1));
+  const TyreGrid grid = small_grid();
+  const double speed = 22.2;
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
+  const TyreRunSettings settings{speed, 80 * grid.dx() / speed, 3200.0, HistoryKind::modal};
+  const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(grid.points(), grid.points());
+  for (const double exponent : {1.5, 2.0}) {
+    NonlinearTread springs{Eigen::VectorXd::Constant(grid.points(), 4e8 * grid.dx() * grid.dy() / std::pow(1e-3, exponent - 1.0)),
+                           exponent, NonlinearTreadSolver::kinsol};
+    const TyreContactTrace reference = simulate_rolling_tyre(rolling, none, Bumps(), settings, nullptr, &springs);
+    springs.solver = NonlinearTreadSolver::newton;
+    const TyreContactTrace newton = simulate_rolling_tyre(rolling, none, Bumps(), settings, nullptr, &springs);
+    EXPECT_LT(reference.contact_area.minCoeff(), 0.9 * reference.contact_area.maxCoeff());  // contact comes and goes
+    // The steady state (T not symmetric: BiCGSTAB against KINSOL) and each step.
+    EXPECT_NEAR(newton.indentation, reference.indentation, 1e-10 * reference.indentation) << "n = " << exponent;
+    EXPECT_LE((newton.steady_force - reference.steady_force).cwiseAbs().maxCoeff(), 1e-8 * reference.steady_force.maxCoeff());
+    EXPECT_LE((newton.force - reference.force).cwiseAbs().maxCoeff(), 1e-8 * reference.force.maxCoeff()) << "n = " << exponent;
+    EXPECT_LE((newton.displacement - reference.displacement).cwiseAbs().maxCoeff(),
+              1e-8 * reference.displacement.cwiseAbs().maxCoeff())
+        << "n = " << exponent;
+    EXPECT_GT(newton.lcp_cg_iterations, 0);
+  }
+}
+
 TEST(RollingTyre, SmoothRoadKeepsTheSteadyState) {
   const KroppPlate plate(small_plate(0.15));
   const TyreGrid grid = small_grid();
