@@ -286,7 +286,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   sound.radiation.sample_rate_hz = 1.0 / dt;
   sound.cache_folder = options.cache;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
-                                      settings.static_load, {}, {}, belt_psd.get(), {}};
+                                      settings.static_load, {}, {}, belt_psd.get(), {}, true, {}};
   // A long run's radiation takes the tread velocity as the run makes it, in blocks, instead of
   // the record after the run (tyre_sound.hpp): the memory stays flat in the run's length. With
   // the energy budget (the plate's estimates), the stream also gathers the radiating velocity's

@@ -43,7 +43,7 @@ Outputs run(bool pipelined, const std::filesystem::path& h5, bool sink = false) 
   const auto cells = static_cast<std::size_t>(grid.circumferential) * static_cast<std::size_t>(grid.lateral);
   PointAveragedPsd psd(cells, speed / grid.dx(), 32, {std::vector<double>(cells, 1.0)});
   Outputs out;
-  TyreStepOutputSettings step{ContactFields::contact, h5, samples, speed, 3000.0, {}, {}, &psd, {}, true};
+  TyreStepOutputSettings step{ContactFields::contact, h5, samples, speed, 3000.0, {}, {}, &psd, {}, true, {}};
   // Some belt cells, weighted: a stand-in for the radiation mesh's sampling.
   step.tread_sampling = [&](const RadiatingPatch& patch) {
     out.patch = patch;
