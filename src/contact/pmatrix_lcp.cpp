@@ -9,6 +9,8 @@
 
 #include <Eigen/LU>
 
+#include "contact/block_pivoting_exchange.hpp"
+
 namespace rollnoise {
 namespace {
 
@@ -23,8 +25,7 @@ void pivot(const Eigen::VectorXd& q, std::vector<Eigen::Index>& active, PMatrixL
   std::vector<char>& basic = result.basic;
   const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
   const double tolerance = 1e-13 * scale;
-  Eigen::Index best = n + 1;
-  int backups = 10;
+  BlockPivotingExchange exchange(n);
   const int max_iterations = static_cast<int>(10 * n + 100);
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
     active.clear();
@@ -56,20 +57,9 @@ void pivot(const Eigen::VectorXd& q, std::vector<Eigen::Index>& active, PMatrixL
       result.z = result.z.cwiseMax(0.0);
       return;
     }
-    if (infeasible < best || backups > 0) {
-      if (infeasible < best) {
-        best = infeasible;
-        backups = 10;
-      } else {
-        --backups;
-      }
-      for (Eigen::Index i = 0; i < n; ++i) {
-        char& flag = basic[static_cast<std::size_t>(i)];
-        if (flag ? result.z(i) < -tolerance : result.w(i) < -tolerance) flag = !flag;
-      }
-    } else {
-      basic[static_cast<std::size_t>(last)] = !basic[static_cast<std::size_t>(last)];  // Murty's rule, on the largest infeasible index
-    }
+    exchange.exchange(basic, infeasible, last, [&](Eigen::Index i) {
+      return basic[static_cast<std::size_t>(i)] ? result.z(i) < -tolerance : result.w(i) < -tolerance;
+    });
   }
   throw std::runtime_error("P-matrix LCP did not converge in " + std::to_string(max_iterations) +
                            " iterations (n = " + std::to_string(n) + "): is the matrix a P-matrix?");

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "contact/block_pivoting_exchange.hpp"
+
 namespace rollnoise {
 namespace {
 
@@ -306,8 +308,7 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
   // Block principal pivoting over contact sets, as for the linear tread (pmatrix_lcp.cpp; Júdice
   // & Pires 1994): exchange all infeasible points at once while their number falls (with ten
   // tries more), else one, the last (Murty's rule).
-  Eigen::Index best = size + 1;
-  int backups = 10;
+  BlockPivotingExchange exchange(size);
   const Eigen::Index max_rounds = 10 * size + 100;
   for (Eigen::Index round = 0; round < max_rounds; ++round) {
     // δ = 0 off the contact set, exactly.
@@ -341,20 +342,9 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
       for (Eigen::Index p = 0; p < size; ++p) in_contact_[static_cast<std::size_t>(p)] = force_(p) > 0.0 ? 1 : 0;
       return force_;
     }
-    if (infeasible < best || backups > 0) {
-      if (infeasible < best) {
-        best = infeasible;
-        backups = 10;
-      } else {
-        --backups;
-      }
-      for (Eigen::Index p = 0; p < size; ++p) {
-        char& flag = active_[static_cast<std::size_t>(p)];
-        if (flag ? delta_(p) < -threshold : gap_(p) < -threshold) flag = !flag;
-      }
-    } else {
-      active_[static_cast<std::size_t>(last)] = !active_[static_cast<std::size_t>(last)];
-    }
+    exchange.exchange(active_, infeasible, last, [&](Eigen::Index p) {
+      return active_[static_cast<std::size_t>(p)] ? delta_(p) < -threshold : gap_(p) < -threshold;
+    });
   }
   throw std::runtime_error("TreadNewtonContact: the contact set did not settle in " + std::to_string(max_rounds) +
                            " exchanges (P = " + std::to_string(size) + ")");
