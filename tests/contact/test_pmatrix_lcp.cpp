@@ -3,8 +3,10 @@
 // enumeration of all basic sets; the persistent solver against it, step by step, on a rolling
 // sequence of a translation-invariant, non-symmetric matrix like the two-layer tyre's G0.
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <Eigen/LU>
@@ -232,18 +234,24 @@ TEST(BorderedLu, ABaseIndexThatLeavesTheWindowForcesAFreshFactor) {
   EXPECT_NEAR(z(w.index(4, 1)), 1.0 / (*m)(0, 0), 1e-14);
 }
 
+// The FFT product against the dense one, m·z, on three random z.
+void expect_dense_product(WindowConvolution& product, const Eigen::MatrixXd& m, std::uint64_t seed,
+                          const std::string& label) {
+  std::mt19937_64 rng(seed);
+  Eigen::VectorXd y;
+  for (int trial = 0; trial < 3; ++trial) {
+    const Eigen::VectorXd z = random_vector(m.rows(), rng);
+    product.apply(z, y);
+    const Eigen::VectorXd expected = m * z;
+    EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff()) << label;
+  }
+}
+
 TEST(WindowConvolution, EqualsTheDenseProductOfATranslationInvariantMatrix) {
   for (const Window w : {Window{40, 6}, Window{7, 1}, Window{1, 3}}) {
     const Eigen::MatrixXd m = rolling_matrix(w);
     WindowConvolution product(m, w.length, w.lateral);
-    std::mt19937_64 rng(17);
-    Eigen::VectorXd y;
-    for (int trial = 0; trial < 3; ++trial) {
-      const Eigen::VectorXd z = random_vector(w.points(), rng);
-      product.apply(z, y);
-      const Eigen::VectorXd expected = m * z;
-      EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff()) << w.length << " x " << w.lateral;
-    }
+    expect_dense_product(product, m, 17, std::to_string(w.length) + " x " + std::to_string(w.lateral));
   }
 }
 
@@ -265,15 +273,8 @@ TEST(WindowConvolution, FoldsALaterallySymmetricMatrixIntoEvenAndOddRowsAndLeave
             for (int ib = 0; ib < w.length; ++ib) m(w.index(ia, ja), w.index(ib, jb)) = kernel(ia - ib, ja, jb);
       WindowConvolution product(m, w.length, w.lateral);
       EXPECT_EQ(product.lateral_symmetry(), tilt == 0.0) << w.length << " x " << w.lateral;
-      std::mt19937_64 rng(23);
-      Eigen::VectorXd y;
-      for (int trial = 0; trial < 3; ++trial) {
-        const Eigen::VectorXd z = random_vector(w.points(), rng);
-        product.apply(z, y);
-        const Eigen::VectorXd expected = m * z;
-        EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff())
-            << w.length << " x " << w.lateral << ", tilt " << tilt;
-      }
+      expect_dense_product(product, m, 23,
+                           std::to_string(w.length) + " x " + std::to_string(w.lateral) + ", tilt " + std::to_string(tilt));
     }
 }
 
