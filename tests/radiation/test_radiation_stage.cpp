@@ -10,6 +10,7 @@
 
 #include "radiation/belt_sampling.hpp"
 #include "radiation/tyre_radiation.hpp"
+#include "coarse_radiation_settings.hpp"
 
 namespace rollnoise {
 namespace {
@@ -86,16 +87,6 @@ TEST(BeltSampling, KeepsVolumeVelocityAndConstants) {
   EXPECT_THROW(belt_to_tread_matrix(0, across, mesh), std::invalid_argument);
 }
 
-TyreRadiationSettings coarse_settings() {
-  TyreRadiationSettings settings;
-  settings.mesh.around = 48;
-  settings.mesh.across = 4;
-  settings.mesh.sidewall_rings = 6;
-  settings.max_frequency_hz = 600.0;
-  settings.anchor_spacing_hz = 100.0;
-  return settings;
-}
-
 // The surface velocity over time of a monopole (volume velocity Re(q e^{iω0 t})) inside the
 // tyre, and its exact pressure at the receivers over the rigid road.
 struct MonopoleCase {
@@ -112,7 +103,7 @@ TEST(TyreRadiationStage, MonopoleFieldAndPowerOverTime) {
   receivers << 0.2, -0.2, 0.0,  //
       0.29, 0.29, 7.5,           //
       0.1, 0.1, 1.2;
-  TyreRadiationSettings settings = coarse_settings();
+  TyreRadiationSettings settings = coarse_radiation_settings();
   settings.anchor_spacing_hz = 50.0;
   const TyreRadiation radiation(settings, receivers);
   const TyreSurfaceMesh& mesh = radiation.mesh();
@@ -158,7 +149,7 @@ TEST(TyreRadiationStage, MonopoleFieldAndPowerOverTime) {
 TEST(TyreRadiationStage, SameNumbersWithAnyThreadCount) {
   Eigen::Matrix3Xd receivers(3, 1);
   receivers << 0.2, 0.29, 0.1;
-  TyreRadiationSettings settings = coarse_settings();
+  TyreRadiationSettings settings = coarse_radiation_settings();
   settings.max_frequency_hz = 300.0;
   Eigen::MatrixXd velocity(400, 48 * 4);
   for (Eigen::Index n = 0; n < velocity.rows(); ++n)
@@ -175,7 +166,7 @@ TEST(TyreRadiationStage, SameNumbersWithAnyThreadCount) {
 TEST(TyreRadiationStage, Anchors) {
   Eigen::Matrix3Xd receivers(3, 1);
   receivers << 0.2, 0.29, 0.1;
-  TyreRadiationSettings settings = coarse_settings();
+  TyreRadiationSettings settings = coarse_radiation_settings();
   settings.max_frequency_hz = 3000.0;
   const TyreRadiation radiation(settings, receivers);
   const std::vector<double> a = radiation.anchors(48000.0);
@@ -274,7 +265,7 @@ TEST(TyreRadiationStage, BandMeshesTakeTheBeltsMeansExactly) {
 TEST(TyreRadiationStage, SameNumbersWithAnyThreadCountOverTwoMeshes) {
   Eigen::Matrix3Xd receivers(3, 2);
   receivers << 0.2, 0.0, 0.29, 7.5, 0.1, 1.2;
-  TyreRadiationSettings settings = coarse_settings();
+  TyreRadiationSettings settings = coarse_radiation_settings();
   settings.max_frequency_hz = 2500.0;
   settings.anchor_spacing_hz = 250.0;
   const TyreRadiation probe(settings, receivers);

@@ -17,22 +17,13 @@
 #include "acoustics/fractional_octave_bands.hpp"
 #include "core/real_fft_batch.hpp"
 #include "radiation/tyre_radiation.hpp"
+#include "coarse_radiation_settings.hpp"
 
 namespace rollnoise {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kRate = 2000.0;  // Hz: the band to 600 Hz, blocks of ≥ 8192 samples (4.1 s)
-
-TyreRadiationSettings stream_settings() {
-  TyreRadiationSettings settings;  // a coarse mesh, one level for the band: the stage, not the mesh, is under test
-  settings.mesh.around = 48;
-  settings.mesh.across = 4;
-  settings.mesh.sidewall_rings = 6;
-  settings.max_frequency_hz = 600.0;
-  settings.anchor_spacing_hz = 100.0;
-  return settings;
-}
 
 Eigen::Matrix3Xd stream_receivers() {
   Eigen::Matrix3Xd receivers(3, 3);
@@ -79,7 +70,7 @@ double db(double ratio) { return 10.0 * std::log10(ratio); }
 // around and across the tread (so that it radiates, unlike independent noise on every cell),
 // and a steady part that the stage takes out.
 TEST(TyreRadiationStream, BlocksAgreeWithTheWholeRecord) {
-  const TyreRadiation radiation(stream_settings(), stream_receivers());
+  const TyreRadiation radiation(coarse_radiation_settings(), stream_receivers());
   const TyreSurfaceMesh& mesh = radiation.mesh();
   const std::size_t block = TyreRadiationStream::block_samples(kRate);
   ASSERT_GE(block, 8192u);
@@ -151,7 +142,7 @@ TEST(TyreRadiationStream, BlocksAgreeWithTheWholeRecord) {
 // A tone between anchors and between the grids' bins: its power is conserved across the blocks
 // (each block's periodogram weighted by its share of the record), and its level at the receivers.
 TEST(TyreRadiationStream, ToneIsConservedAcrossBlocks) {
-  const TyreRadiation radiation(stream_settings(), stream_receivers());
+  const TyreRadiation radiation(coarse_radiation_settings(), stream_receivers());
   const TyreSurfaceMesh& mesh = radiation.mesh();
   const std::size_t block = TyreRadiationStream::block_samples(kRate);
   const auto samples = static_cast<Eigen::Index>(2 * block + 3000);
@@ -177,7 +168,7 @@ TEST(TyreRadiationStream, ToneIsConservedAcrossBlocks) {
 
 // The same numbers with any thread count; the samples must be those announced.
 TEST(TyreRadiationStream, DeterministicAndChecked) {
-  TyreRadiationSettings settings = stream_settings();
+  TyreRadiationSettings settings = coarse_radiation_settings();
   settings.max_frequency_hz = 300.0;
   const std::size_t block = TyreRadiationStream::block_samples(kRate);
   Eigen::MatrixXd velocity(static_cast<Eigen::Index>(block + 500), 48 * 4);
