@@ -231,37 +231,41 @@ const std::string mpirun_two_ranks =
     "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MPIEXEC_EXECUTABLE " -n 2 --oversubscribe ";
 #endif
 
-// --fail-fast under mpirun -n 2: case i runs on rank i mod 2, so the failing first case is rank
-// 0's and the second (about a second of work) rank 1's, started at the same time. The failure
-// (a bad speed, found at once) must stop the cases neither rank has started: rank 0's third
-// and rank 1's fourth. Before the fix rank 1 went on with its fourth case. The second case,
-// already running, finishes and stays.
+// --fail-fast under mpirun -n 2: case i runs on rank i mod 2. Rank 0 runs a short case (0.01 s
+// rolled, about 0.8 s of work), then the failing one (a negative contact window, found at once;
+// the [vary] keys are taken in sorted order, the last varying fastest). Rank 1 starts a long case
+// (1 s rolled, about 4 s of work) beside rank 0's first, so that it is still running when the
+// failure comes. The failure must stop the case neither rank has started, rank 1's second; before
+// the fix rank 1 went on with it. The long case, already running, finishes and stays. (The
+// failing case used to come first: whether rank 1 had started its case by then depended on the
+// ranks' start-up skew, and the test failed about once in four runs.)
 TEST(StudyCli, FailFastUnderMpiStopsTheCasesOfEveryRank) {
 #if ROLLNOISE_TEST_MPI
   Workspace ws;
   ws.write("base.toml", cheap_base_case());
-  ws.write("study.toml",
-           "[study]\nname = \"failing\"\ncase = \"base.toml\"\n[vary]\nrolling.speed = [-5.0, 22.222, 30.556, 27.778]\n");
+  ws.write("study.toml", "[study]\nname = \"failing\"\ncase = \"base.toml\"\n[vary]\nrolling.contact_window = [0.15, -0.15]\n"
+                         "rolling.duration = [0.01, 1.0]\n");
   const RunResult r = ws.run({"study", "study.toml", "--out", "s", "--fail-fast"}, mpirun_two_ranks);
   EXPECT_NE(r.status, 0) << describe(r);
-  EXPECT_TRUE(contains(r.out, "4 cases, 1 ok (0 from an earlier run), 1 failed")) << describe(r);
-  EXPECT_TRUE(contains(r.err, "case speed--5 failed")) << r.err;
+  EXPECT_TRUE(contains(r.out, "4 cases, 2 ok (0 from an earlier run), 1 failed")) << describe(r);
+  EXPECT_TRUE(contains(r.err, "case contact_window--0.15_duration-0.01 failed")) << r.err;
   const nlohmann::json summary = read_json(ws.path("s") / "summary.json");
   const auto& list = summary["case_list"];
   ASSERT_EQ(list.size(), 4u);
-  const std::vector<std::string> expected = {"failed", "ok", "not run", "not run"};
+  const std::vector<std::string> expected = {"ok", "ok", "failed", "not run"};
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(list[i]["status"], expected[i]) << "case " << i << ": " << list[i];
   EXPECT_TRUE(contains(list[3]["message"].get<std::string>(), "--fail-fast")) << list[3];
-  // Only the finished case's folder, and no hidden leftover (staging folder or marker).
+  // Only the finished cases' folders, and no hidden leftover (staging folder or marker).
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(ws.path("s") / "cases")) names.push_back(entry.path().filename().string());
-  EXPECT_EQ(names, std::vector<std::string>{"speed-22.222"});
-  EXPECT_TRUE(fs::is_regular_file(ws.path("s") / "cases" / "speed-22.222" / "summary.json"));
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"contact_window-0.15_duration-0.01", "contact_window-0.15_duration-1"}));
+  EXPECT_TRUE(fs::is_regular_file(ws.path("s") / "cases" / "contact_window-0.15_duration-1" / "summary.json"));
 
-  // A rerun without --fail-fast keeps the finished case and runs the two that were not run.
+  // A rerun without --fail-fast keeps the finished cases and runs the two others, which fail.
   const RunResult rerun = ws.run({"study", "study.toml", "--out", "s"}, mpirun_two_ranks);
   EXPECT_NE(rerun.status, 0) << describe(rerun);
-  EXPECT_TRUE(contains(rerun.out, "4 cases, 3 ok (1 from an earlier run), 1 failed")) << describe(rerun);
+  EXPECT_TRUE(contains(rerun.out, "4 cases, 2 ok (2 from an earlier run), 2 failed")) << describe(rerun);
 #else
   GTEST_SKIP() << "built without MPI (ROLLNOISE_MPI=OFF)";
 #endif
