@@ -129,13 +129,19 @@ std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k,
   return in_order_of_x(stones, x_lo, x_hi, k.spacing);
 }
 
-// Raises the grid x = (first + i) h (i < x_count), y = (j − half_y) h (j < 2 half_y + 1),
-// row-major in x, to the upper surface of each stone over it. The maximum does not depend on the
-// order of the stones.
+// The columns of a grid y = (j − half_y) h that are held: j = first .. first + count − 1.
+struct Columns {
+  std::size_t first = 0, count = 0;
+  static Columns all(std::size_t half_y) { return {0, 2 * half_y + 1}; }
+};
+
+// Raises the grid x = (first + i) h (i < x_count), y = (j − half_y) h (j in `held`), row-major
+// in x (row stride held.count), to the upper surface of each stone over it. The maximum does not
+// depend on the order of the stones, and a point's height on the stones over it only.
 void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std::vector<Stone>& stones,
-                     std::size_t first, std::size_t x_count, std::size_t half_y, std::vector<double>& z) {
+                     std::size_t first, std::size_t x_count, std::size_t half_y, Columns held, std::vector<double>& z) {
   const double h = k.spacing;
-  const std::size_t y_count = 2 * half_y + 1;
+  const std::size_t y_count = held.count;
   const double thickness = spec.shape_factor * k.dmax;  // T
   const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
   const double origin = h * static_cast<double>(first);
@@ -151,8 +157,9 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
     const double z_c = negative ? thickness - (1.0 - negative_cut_fraction) * c : c;
     const double i_lo = std::max(0.0, std::ceil((x - a) / h));
     const double i_hi = std::min(static_cast<double>(x_count - 1), std::floor((x + a) / h));
-    const double j_lo = std::max(0.0, std::ceil((y - a) / h + static_cast<double>(half_y)));
-    const double j_hi = std::min(static_cast<double>(y_count - 1), std::floor((y + a) / h + static_cast<double>(half_y)));
+    const double j_lo = std::max(static_cast<double>(held.first), std::ceil((y - a) / h + static_cast<double>(half_y)));
+    const double j_hi = std::min(static_cast<double>(held.first + held.count - 1),
+                                 std::floor((y + a) / h + static_cast<double>(half_y)));
     if (i_lo > i_hi || j_lo > j_hi) continue;
     for (auto i = static_cast<std::size_t>(i_lo); i <= static_cast<std::size_t>(i_hi); ++i) {
       const double dx = h * static_cast<double>(i) - x;
@@ -164,7 +171,7 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
         if (rho2 >= 1.0) continue;
         double top = z_c + c * std::sqrt(1.0 - rho2);
         if (negative) top = std::min(top, thickness);
-        double& cell = heights[i * y_count + j];
+        double& cell = heights[i * y_count + (j - held.first)];
         cell = std::max(cell, top);
       }
     }
@@ -184,7 +191,7 @@ std::vector<double> raw_heights(const AggregateRoadSpec& spec, const Checked& k,
   const std::vector<Stone> stones =
       place_stones(spec, k, engine, -reach, h * static_cast<double>(x_count - 1) + reach, h * static_cast<double>(half_y) + reach);
   std::vector<double> z(x_count * (2 * half_y + 1), spec.binder_level * (spec.shape_factor * k.dmax));
-  raise_to_stones(spec, k, stones, 0, x_count, half_y, z);
+  raise_to_stones(spec, k, stones, 0, x_count, half_y, Columns::all(half_y), z);
   mean = 0.0;
   for (double v : z) mean += v;
   mean /= static_cast<double>(z.size());
@@ -300,8 +307,13 @@ class TiledAggregateSurface final : public RoadSurface {
     // Tile 0: the road make_aggregate_surface makes for `length`, and the mean every tile removes.
     std::vector<double> z = raw_heights(spec_, k_, tile_samples_ + 1, half_y_, mean_);
     remove_mean(k_, mean_, 0, 2 * half_y_ + 1, z);
-    tiles_[0] = {0, std::move(z)};
-    tiles_[1] = {std::numeric_limits<std::size_t>::max(), {}};
+    tiles_[0] = {0, Columns::all(half_y_), std::move(z)};
+    tiles_[1] = {std::numeric_limits<std::size_t>::max(), {}, {}};
+    // The later tiles only under the tyre: |y| ≤ half_width and a column beyond for the
+    // interpolation, and one more for rounding (a third of the surface's 0.5 m, and of the time).
+    const auto reach = static_cast<std::size_t>(std::ceil(spec_.half_width / k_.spacing)) + 2;
+    const std::size_t strip = std::min(half_y_, reach);
+    strip_ = {half_y_ - strip, 2 * strip + 1};
   }
 
   std::string type() const override { return "aggregate"; }
@@ -314,14 +326,15 @@ class TiledAggregateSurface final : public RoadSurface {
     auto index = static_cast<std::size_t>(std::floor(x / tile_length));
     if (index > 0 && x - tile_length * static_cast<double>(index) < 0.0) --index;
     const std::lock_guard lock(mutex_);
-    const std::vector<double>& z = tile(index);
-    return grid_height(z.data(), 2 * half_y_ + 1, tile_samples_ + 1, 2 * half_y_ + 1, k_.spacing,
-                       x - tile_length * static_cast<double>(index), y, "aggregate");
+    const Tile& t = tile(index);
+    return grid_height(t.heights.data(), t.held.count, tile_samples_ + 1, 2 * half_y_ + 1, k_.spacing,
+                       x - tile_length * static_cast<double>(index), y, "aggregate", t.held.first, t.held.count);
   }
 
  private:
   struct Tile {
     std::size_t index;
+    Columns held;
     std::vector<double> heights;
   };
 
@@ -356,9 +369,9 @@ class TiledAggregateSurface final : public RoadSurface {
     return place_stones(spec_, k_, engine, start, start + length, y_half);
   }
 
-  const std::vector<double>& tile(std::size_t index) const {
+  const Tile& tile(std::size_t index) const {
     for (const Tile& t : tiles_)
-      if (t.index == index) return t.heights;
+      if (t.index == index) return t;
     // Replace the tile farther from this one (an empty slot first): the tyre reads two
     // neighbouring tiles around a boundary, and moves on.
     const auto distance = [index](const Tile& t) {
@@ -366,13 +379,14 @@ class TiledAggregateSurface final : public RoadSurface {
       return t.index > index ? t.index - index : index - t.index;
     };
     Tile& slot = distance(tiles_[0]) >= distance(tiles_[1]) ? tiles_[0] : tiles_[1];
-    std::vector<double> z((tile_samples_ + 1) * (2 * half_y_ + 1), spec_.binder_level * (spec_.shape_factor * k_.dmax));
+    const Columns held = index == 0 ? Columns::all(half_y_) : strip_;
+    std::vector<double> z((tile_samples_ + 1) * held.count, spec_.binder_level * (spec_.shape_factor * k_.dmax));
     const std::size_t first = index * tile_samples_;
     for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
-      raise_to_stones(spec_, k_, stones_of(neighbour), first, tile_samples_ + 1, half_y_, z);
-    remove_mean(k_, mean_, first, 2 * half_y_ + 1, z);
-    slot = {index, std::move(z)};
-    return slot.heights;
+      raise_to_stones(spec_, k_, stones_of(neighbour), first, tile_samples_ + 1, half_y_, held, z);
+    remove_mean(k_, mean_, first, held.count, z);
+    slot = {index, held, std::move(z)};
+    return slot;
   }
 
   struct TileStones {
@@ -385,6 +399,7 @@ class TiledAggregateSurface final : public RoadSurface {
   Checked k_;
   std::size_t tile_samples_, half_y_;
   double mean_ = 0.0;
+  Columns strip_;  // the columns of tiles k ≥ 1
   mutable std::array<TileStones, 3> stones_;
   mutable std::uint64_t uses_ = 0;
   // A cache behind a const interface (RoadSurface::height): the two tiles nearest the tyre.

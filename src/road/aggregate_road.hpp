@@ -83,7 +83,8 @@ std::unique_ptr<SampledSurface> make_aggregate_surface(const AggregateRoadSpec& 
 // k ≥ 1 holds the stones centred in its own stretch, drawn from a seed of its own (seed, k), so
 // the stone density is the same everywhere and the tiles join without a seam (a tile's samples
 // take the stones of its neighbours that reach over); its heights are referred to tile 0's mean.
-// At most two tiles are held. A run of at most `length` gets the SampledSurface itself.
+// Tiles after the first hold only the strip the tyre reads, |y| ≤ half_width (and a column beyond
+// for the interpolation): a third of the default 0.5 m surface. At most two tiles are held. A run of at most `length` gets the SampledSurface itself.
 std::unique_ptr<RoadSurface> make_rolling_aggregate_surface(const AggregateRoadSpec& spec);
 
 }  // namespace rollnoise

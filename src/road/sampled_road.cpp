@@ -47,7 +47,8 @@ SampledSurface::SampledSurface(std::string type, double spacing, std::size_t x_c
 }
 
 double grid_height(const double* samples, std::size_t stride, std::size_t x_count, std::size_t y_count,
-                   double spacing, double x, double y, const std::string& type) {
+                   double spacing, double x, double y, const std::string& type, std::size_t first_column,
+                   std::size_t columns) {
   if (x < 0.0) return 0.0;  // lead-in convention (road_profile.hpp)
   const auto last_x = static_cast<double>(x_count - 1);
   const auto last_y = static_cast<double>(y_count - 1);
@@ -60,9 +61,14 @@ double grid_height(const double* samples, std::size_t stride, std::size_t x_coun
   }
   const std::size_t i = std::min(static_cast<std::size_t>(std::max(t, 0.0)), x_count - 2);
   const std::size_t j = std::min(static_cast<std::size_t>(std::max(u, 0.0)), y_count - 2);
+  if (columns != 0 && (j < first_column || j + 2 > first_column + columns)) {
+    throw std::logic_error(type + " road: y = " + format_number(y) + " m is outside the strip of columns " +
+                           std::to_string(first_column) + " to " + std::to_string(first_column + columns - 1) +
+                           " generated under the tyre");
+  }
   const double fx = std::clamp(t - static_cast<double>(i), 0.0, 1.0);
   const double fy = std::clamp(u - static_cast<double>(j), 0.0, 1.0);
-  const double* row0 = samples + i * stride + j;
+  const double* row0 = samples + i * stride + (j - first_column);
   const double* row1 = row0 + stride;
   // Exact at the grid points (weights 1 and 0).
   return (1.0 - fx) * ((1.0 - fy) * row0[0] + fy * row0[1]) + fx * ((1.0 - fy) * row1[0] + fy * row1[1]);

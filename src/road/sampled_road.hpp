@@ -35,9 +35,12 @@ class SampledProfile final : public RoadProfile {
 // samples[i·y_count + j].
 // Bilinear interpolation on such a grid, with rows `stride` apart (stride >= y_count), for every
 // surface stored this way (SampledSurface, RandomSurface). r = 0 for x < 0; a point outside the
-// grid (beyond rounding) is a std::logic_error naming `type`.
+// grid (beyond rounding) is a std::logic_error naming `type`. A grid may hold only the columns
+// first_column .. first_column + columns − 1 (columns = 0: all), samples[i·stride + j − first_column]
+// (a rolling road's strip under the tyre); a point between columns it does not hold is a logic_error.
 double grid_height(const double* samples, std::size_t stride, std::size_t x_count, std::size_t y_count,
-                   double spacing, double x, double y, const std::string& type);
+                   double spacing, double x, double y, const std::string& type, std::size_t first_column = 0,
+                   std::size_t columns = 0);
 
 class SampledSurface final : public RoadSurface {
  public:

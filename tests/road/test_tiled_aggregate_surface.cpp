@@ -5,11 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "road/aggregate_road.hpp"
@@ -126,6 +125,22 @@ TEST(TiledAggregateSurface, HeightsDoNotDependOnTheOrderTheTilesAreVisited) {
   // Backwards: every tile is dropped and made again at least once.
   for (std::size_t i = xs.size(); i-- > 0;) ASSERT_EQ(jumping->height(xs[i], 0.012), ahead[i]) << xs[i];
   for (std::size_t i = 0; i < xs.size(); i += 7) ASSERT_EQ(jumping->height(xs[i], 0.012), ahead[i]) << xs[i];
+}
+
+// Tiles after the first hold only the strip the tyre reads (|y| ≤ half_width and a column
+// beyond): there they equal, bit for bit, the tiles of a tyre as wide as the surface (which hold
+// every column), and a point beyond the strip is an error rather than a height never raised.
+TEST(TiledAggregateSurface, LaterTilesHoldTheStripUnderTheTyreWithTheFullWidthHeights) {
+  const auto narrow = make_rolling_aggregate_surface(dense_asphalt(2.0));
+  AggregateRoadSpec wide_spec = dense_asphalt(2.0);
+  wide_spec.half_width = wide_spec.width / 2.0;
+  const auto wide = make_rolling_aggregate_surface(wide_spec);
+  for (double x = 0.0; x < 2.0; x += 0.0071)
+    for (double y : {-0.04, -0.0391, -0.02, 0.0, 0.0173, 0.0399, 0.04})
+      ASSERT_EQ(narrow->height(x, y), wide->height(x, y)) << x << ' ' << y;
+  EXPECT_THROW(narrow->height(1.0, 0.049), std::logic_error);
+  EXPECT_NO_THROW(wide->height(1.0, 0.049));
+  EXPECT_NO_THROW(narrow->height(0.2, 0.049)) << "the first tile holds the whole width";
 }
 
 }  // namespace
