@@ -8,7 +8,10 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "core/cancellation.hpp"
 #include "core/output_directory.hpp"
@@ -26,14 +29,21 @@ namespace {
 // plot draws would be lost, or leave the run's staging folder to the watchdog. Here the wait
 // polls the CancellationToken: on Ctrl-C gnuplot is stopped and Interrupted thrown, which
 // removes the staging folder. Returns gnuplot's exit status (-1 when it could not be run).
-int run_gnuplot(const std::filesystem::path& dir, const std::string& script) {
+// `scripts`: one or more, `reset session` between them.
+int run_gnuplot(const std::filesystem::path& dir, const std::vector<std::string>& scripts) {
+  // The arguments made before the fork: only async-signal-safe calls after it.
+  std::vector<const char*> argv{"gnuplot"};
+  for (std::size_t i = 0; i < scripts.size(); ++i) {
+    if (i > 0) argv.insert(argv.end(), {"-e", "reset session"});
+    argv.push_back(scripts[i].c_str());
+  }
+  argv.push_back(nullptr);
   const pid_t child = ::fork();
   if (child < 0) return -1;
   if (child == 0) {
     // Only async-signal-safe calls before exec: the parent has other threads.
     if (::chdir(dir.c_str()) != 0 || ::dup2(STDOUT_FILENO, STDERR_FILENO) < 0) ::_exit(127);
-    const char* argv[] = {"gnuplot", script.c_str(), nullptr};
-    ::execvp("gnuplot", const_cast<char* const*>(argv));
+    ::execvp("gnuplot", const_cast<char* const*>(argv.data()));
     ::_exit(127);
   }
   const CancellationToken cancel;
@@ -61,10 +71,45 @@ bool write_plot(const std::filesystem::path& dir, const std::string& name, const
     return false;
   }
   std::fflush(stdout);  // gnuplot's messages after ours
-  if (run_gnuplot(dir, name + ".gp") != 0) {
+  if (run_gnuplot(dir, {name + ".gp"}) != 0) {
     std::fprintf(stderr, "rollnoise: warning: gnuplot failed on %s.gp; no PNG written\n", name.c_str());
     return false;
   }
+  return true;
+}
+
+void PlotBatch::add(const std::string& name, const std::string& script) {
+  write_text_file(dir_ / (name + ".gp"), script);
+  names_.push_back(name);
+}
+
+bool PlotBatch::draw() {
+  const std::vector<std::string> names = std::exchange(names_, {});
+  if (names.empty()) return true;
+  if (!gnuplot_available()) {
+    for (const std::string& name : names)
+      std::fprintf(stderr, "rollnoise: warning: gnuplot is not installed; wrote %s.gp but no PNG\n", name.c_str());
+    return false;
+  }
+  std::vector<std::string> scripts;
+  for (const std::string& name : names) scripts.push_back(name + ".gp");
+  std::fflush(stdout);
+  if (run_gnuplot(dir_, scripts) == 0) return true;
+  // Which failed: each alone (gnuplot stops at the first error).
+  bool all = true;
+  for (const std::string& name : names) {
+    if (run_gnuplot(dir_, {name + ".gp"}) != 0) {
+      std::fprintf(stderr, "rollnoise: warning: gnuplot failed on %s.gp; no PNG written\n", name.c_str());
+      all = false;
+    }
+  }
+  return all;
+}
+
+bool write_plot(const std::filesystem::path& dir, const std::string& name, const std::string& script, PlotBatch* batch) {
+  if (!batch) return write_plot(dir, name, script);
+  if (batch->dir() != dir) throw std::logic_error("write_plot: a plot for another folder than its batch's");
+  batch->add(name, script);
   return true;
 }
 

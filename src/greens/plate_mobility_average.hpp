@@ -43,7 +43,7 @@ class NearMeanSquareMobility {
   const KroppPlate& plate_;
   double y0_;
   int points_ = 1;
-  std::vector<double> cosines_;  // [i·M + m − 1]
+  std::vector<double> cosines_;  // 2·cos(k_m x_i) at [(m − 1)·points + i]
 };
 
 // α_patch (m/N) for a patch of length l along x and width w ≤ b across, centred on the belt.

@@ -42,7 +42,8 @@
 // ignores (it reads up to the end address in its superblock; h5dump and h5py read the file as
 // usual). Reading checks the trailer first, so a truncated or damaged file never reaches the
 // HDF5 library (which can crash on damaged metadata), then the layout, the key (a foreign file
-// renamed into place), the dimensions and the payload's checksum. Anything wrong: one warning
+// renamed into place) and the dimensions; the payload's checksum attribute is for tools (the
+// trailer's covers the same bytes, and reading is not slowed by a second pass). Anything wrong: one warning
 // ("rollnoise: warning: the radiation cache entry ... is damaged or foreign (...): solving it
 // again") and the anchor is solved and stored again. Writes go to a temporary file beside the
 // entry, renamed into place (core/cache_folder.hpp): two runs storing one entry at once both

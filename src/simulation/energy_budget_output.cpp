@@ -128,7 +128,7 @@ std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& 
 nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget, const RadiatedSound& sound,
                                    const PointAveragedPsd& radiating, const TyreSurfaceMesh& mesh,
                                    double tyre_radius, const Medium& medium, const std::vector<Receiver>& receivers,
-                                   const std::vector<BandSpectrum>& spectra, bool plots) {
+                                   const std::vector<BandSpectrum>& spectra, PlotBatch* plots) {
   const std::vector<FractionalOctaveBand>& bands = budget.bands;
   // Radiated power per band, from the radiation stage's bins.
   const std::vector<double> power =
@@ -258,7 +258,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
     gp << "     '' skip 1 using 1:15 axes x1y2 with linespoints lw 2 pt 4 ps 0.6 lc rgb 'black' title 'sigma (right)', \\\n"
        << "     '' skip 1 using 1:16 axes x1y2 with lines dt 2 lc rgb 'black' title 'sigma piston (right)', \\\n"
        << "     '' skip 1 using 1:17 axes x1y2 with lines dt 3 lc rgb 'black' title 'sigma cylinder (right)'\n";
-    write_plot(dir, "budget", gp.str());
+    write_plot(dir, "budget", gp.str(), plots);
   }
   return {{"file", "budget.csv"},
           {"bands", rows.size()},

@@ -18,6 +18,7 @@
 
 #include "acoustics/band_power.hpp"
 #include "acoustics/sound_levels.hpp"
+#include "core/gnuplot.hpp"
 #include "contact/rolling_tyre.hpp"
 #include "contact/texture_under_contact.hpp"
 #include "contact/tyre_grid.hpp"
@@ -71,12 +72,12 @@ std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& 
                                                          std::size_t segment_length);
 
 // Adds the radiation lines and writes budget.csv. tyre_radius (m): of the pulsating cylinder
-// of the σ estimate; the piston has the tread's area. (and budget.gp/png when `plots`). Returns the
+// of the σ estimate; the piston has the tread's area. (and budget.gp/png into `plots` when there is one). Returns the
 // summary entry "energy_budget" (file name, bands, settings of the estimates).
 nlohmann::json write_energy_budget(const std::filesystem::path& dir, const TyreBudget& budget,
                                    const RadiatedSound& sound, const PointAveragedPsd& radiating,
                                    const TyreSurfaceMesh& mesh, double tyre_radius, const Medium& medium,
                                    const std::vector<Receiver>& receivers, const std::vector<BandSpectrum>& spectra,
-                                   bool plots);
+                                   PlotBatch* plots);
 
 }  // namespace rollnoise

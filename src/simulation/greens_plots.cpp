@@ -13,7 +13,8 @@
 
 namespace rollnoise {
 
-void write_greens_circumference(const std::filesystem::path& dir, const CentreLineResponse& response, int points) {
+void write_greens_circumference(const std::filesystem::path& dir, const CentreLineResponse& response, int points,
+                                PlotBatch* batch) {
   const double length = response.circumference();
   // 0.25, 0.5, 1 and 2 ms: samples 1, 3, 7 and 15 of a table at 0.125 ms (step means over
   // 0.125 ms for a model transformed from the frequency domain).
@@ -40,7 +41,7 @@ void write_greens_circumference(const std::filesystem::path& dir, const CentreLi
      << "set xlabel 'position around the tyre, x (m)'\nset ylabel 'g (mm/(N s))'\n"
      << "plot for [c=2:5] 'greens_circumference.csv' using 1:(column(c)*1e3) with lines lw 1.5 "
         "title columnheader(c)\n";
-  write_plot(dir, "greens_circumference", gp.str());
+  write_plot(dir, "greens_circumference", gp.str(), batch);
 }
 
 }  // namespace rollnoise

@@ -15,7 +15,7 @@ namespace rollnoise {
 namespace fs = std::filesystem;
 namespace {
 
-void plot_spectra(const fs::path& dir, const std::vector<ReceiverSignal>& signals) {
+void plot_spectra(const fs::path& dir, const std::vector<ReceiverSignal>& signals, PlotBatch* batch) {
   std::ostringstream gp;
   gp << "# Drawn by rollnoise from spectrum.csv; run `gnuplot spectrum.gp` to redraw.\n"
      << "set terminal pngcairo size 1000,550 noenhanced font 'DejaVu Sans,10'\n"
@@ -29,13 +29,14 @@ void plot_spectra(const fs::path& dir, const std::vector<ReceiverSignal>& signal
        << "') ? $2 : 1/0):4 with linespoints lw 1.5 pt 7 ps 0.6 title '" << signals[i].name << "'";
   }
   gp << "\n";
-  write_plot(dir, "spectrum", gp.str());
+  write_plot(dir, "spectrum", gp.str(), batch);
 }
 
 }  // namespace
 
 nlohmann::json write_sound_report(const fs::path& dir, const std::vector<ReceiverSignal>& signals,
-                                  const std::string& source, bool plot, std::vector<BandSpectrum>* spectra) {
+                                  const std::string& source, bool plot, std::vector<BandSpectrum>* spectra,
+                                  PlotBatch* batch) {
   std::ofstream csv_file(dir / "spectrum.csv", std::ios::binary);
   csv_file << "receiver,band_hz,Lp_dB,LpA_dB\n";
   nlohmann::json levels = nlohmann::json::object();
@@ -66,7 +67,7 @@ nlohmann::json write_sound_report(const fs::path& dir, const std::vector<Receive
                       {"duration_s", duration}};
   }
   close_output_file(csv_file, dir / "spectrum.csv");
-  if (plot) plot_spectra(dir, signals);
+  if (plot) plot_spectra(dir, signals, batch);
   return levels;
 }
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "acoustics/sound_levels.hpp"
+#include "core/gnuplot.hpp"
 
 namespace rollnoise {
 
@@ -26,9 +27,10 @@ struct ReceiverSignal {
 // Writes spectrum.csv and the spectrum plot into `dir` and returns
 // {RECEIVER: {"Leq_dB", "LAeq_dB", "LAFmax_dB", "sample_rate_hz", "duration_s"}}.
 // `source` names the input in messages (InputError when a signal is too short for bands).
-// `spectra` (optional) receives each signal's band spectrum, in the order of `signals`.
+// `spectra` (optional) receives each signal's band spectrum, in the order of `signals`; `batch`
+// (optional) draws the plot with the folder's others (core/gnuplot.hpp).
 nlohmann::json write_sound_report(const std::filesystem::path& dir, const std::vector<ReceiverSignal>& signals,
                                   const std::string& source, bool plot = true,
-                                  std::vector<BandSpectrum>* spectra = nullptr);
+                                  std::vector<BandSpectrum>* spectra = nullptr, PlotBatch* batch = nullptr);
 
 }  // namespace rollnoise

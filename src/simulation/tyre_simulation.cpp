@@ -118,7 +118,7 @@ void deform_radiating_body(TyreSoundSettings& sound, const RadiatingPatch& patch
 }
 
 // The paper's Fig. 5b: the radial displacement of one material point over one revolution.
-void write_revolution(const fs::path& dir, const std::vector<double>& revolution, double dt) {
+void write_revolution(const fs::path& dir, const std::vector<double>& revolution, double dt, PlotBatch& plots) {
   std::ofstream out(dir / "revolution.csv", std::ios::binary);
   CsvWriter csv(out, {"angle_deg", "time", "displacement"});
   const auto n = revolution.size();
@@ -135,10 +135,10 @@ void write_revolution(const fs::path& dir, const std::vector<double>& revolution
      << "set title 'Radial displacement of one belt point (mid-width) over one revolution; contact at 180 deg'\n"
      << "set xlabel 'angle turned from the top (deg)'\nset ylabel 'displacement (mm)'\nset xrange [0:360]\n"
      << "plot 'revolution.csv' skip 1 using 1:($3*1e3) with lines lw 1.5 notitle\n";
-  write_plot(dir, "revolution", gp.str());
+  write_plot(dir, "revolution", gp.str(), &plots);
 }
 
-void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of_snapshot) {
+void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of_snapshot, PlotBatch& plots) {
   std::ostringstream force;
   force << "# Drawn by rollnoise from contact.csv; run `gnuplot total_force.gp` to redraw.\n"
         << "set terminal pngcairo size 1000,500 noenhanced font 'DejaVu Sans,10'\n"
@@ -148,7 +148,7 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
         << "set ytics nomirror\nset y2tics\n"
         << "plot 'contact.csv' using 1:2 with lines lw 1.5 title 'total force', \\\n"
         << "     '' using 1:($3*1e4) axes x1y2 with lines lw 1 lc rgb '#2ca02c' title 'contact area'\n";
-  write_plot(dir, "total_force", force.str());
+  write_plot(dir, "total_force", force.str(), &plots);
   std::ostringstream map;
   map << "# Drawn by rollnoise from pressure_snapshot.csv; run `gnuplot pressure_map.gp` to redraw.\n"
       << "set terminal pngcairo size 900,600 noenhanced font 'DejaVu Sans,10'\n"
@@ -158,7 +158,7 @@ void plot_tyre_run(const fs::path& dir, const std::string& title, double time_of
       << "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset cblabel 'pressure (kPa)'\nset size ratio -1\n"
       << "set palette defined (0 'white', 1 '#fde725', 2 '#21918c', 3 '#440154')\n"
       << "plot 'pressure_snapshot.csv' skip 1 using ($1*1e3):($2*1e3):($3*1e-3) with image notitle\n";
-  write_plot(dir, "pressure_map", map.str());
+  write_plot(dir, "pressure_map", map.str(), &plots);
 }
 
 // Cells around the tyre: as given, or (by default) the least even FFT-friendly count that lets one
@@ -324,13 +324,16 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // The snapshot at the largest total force: the most telling instant on a rough road.
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", outputs.snapshot_force(), grid);
   const std::vector<double> revolution = outputs.revolution();
+  // The case's plots, drawn together before the folder is committed (core/gnuplot.hpp).
+  PlotBatch plot_batch(staged.staging());
   if (plots) {
-    plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", outputs.snapshot_time());
-    write_greens_circumference(staged.staging(), *make_centre_line_response(tyre, options.cache), grid.circumferential);
-    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps);
+    plot_tyre_run(staged.staging(), model.model + " on a " + road->type() + " road", outputs.snapshot_time(), plot_batch);
+    write_greens_circumference(staged.staging(), *make_centre_line_response(tyre, options.cache), grid.circumferential,
+                               &plot_batch);
+    if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps, plot_batch);
   }
 
-  stages.lap("contact_outputs_and_plots");
+  stages.lap("contact_outputs");
   const double mean_power = trace.input_power.mean();
   nlohmann::json summary;
   summary["case"] = file.name();
@@ -417,16 +420,19 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     budget_written = budget != nullptr;
     stages.lap("energy_budget");
     const std::string source = fs::path(file.path()).filename().string();
+    PlotBatch* sound_plots = plots ? &plot_batch : nullptr;
     const nlohmann::json heard =
-        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, plots, budget.get())
+        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get())
                      : write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed, source,
-                                        plots, budget.get(), options.progress);
+                                        sound_plots, budget.get(), options.progress);
     stages.skip();
     for (const auto& [key, value] : heard.items())
       if (key != "sound_stage_times_s") summary[key] = value;
     const nlohmann::json& sound_stages = heard.at("sound_stage_times_s");
     for (const auto& [key, value] : sound_stages.items()) summary["stage_times_s"][key] = value;
   }
+  plot_batch.draw();
+  stages.lap("plots");
   summary["warnings"] = trace.warnings;
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
   summary["contact_time_s"] = contact_seconds;

@@ -31,7 +31,7 @@ namespace {
 
 // Band sound power levels from the power in each transform bin: the bins within each band's
 // exact edges (IEC 61260-1), L_W re 1 pW, and A-weighted at the exact mid-band frequency.
-nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound, double highest_band_hz, bool plots) {
+nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound, double highest_band_hz, PlotBatch* plots) {
   const std::vector<FractionalOctaveBand> bands = fractional_octave_bands(3, 20.0, highest_band_hz);
   std::ofstream out(dir / "sound_power.csv", std::ios::binary);
   CsvWriter csv(out, {"band_hz", "Lw_dB", "LwA_dB"});
@@ -60,7 +60,7 @@ nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound
        << "set title 'Sound power radiated by the tyre (into the half-space above the road)'\n"
        << "plot 'sound_power.csv' skip 1 using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title 'L_W', \\\n"
        << "     '' skip 1 using 1:3 with linespoints lw 1.5 pt 5 ps 0.6 title 'L_WA'\n";
-    write_plot(dir, "sound_power", gp.str());
+    write_plot(dir, "sound_power", gp.str(), plots);
   }
   return {{"Lw_dB", 10.0 * std::log10(std::max(total, 1e-30) / 1e-12)},
           {"LwA_dB", 10.0 * std::log10(std::max(total_a, 1e-30) / 1e-12)},
@@ -144,7 +144,7 @@ std::unique_ptr<TyreRadiation> make_radiation(const TyreSoundSettings& settings)
 // radiating velocity (with a budget); radiation_seconds: the stage's time.
 nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings& settings, const TyreRadiation& radiation,
                                     const RadiatedSound& sound, const PointAveragedPsd* radiating, double radiation_seconds,
-                                    double sample_rate, double speed, const std::string& source, bool plots,
+                                    double sample_rate, double speed, const std::string& source, PlotBatch* plots,
                                     const TyreBudget* budget, StageTimes& stages) {
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
   const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);
@@ -175,7 +175,7 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
   stages.lap("audio_signals");
   nlohmann::json result;
   std::vector<BandSpectrum> spectra;
-  result["levels"] = write_sound_report(dir, signals, source, plots, &spectra);
+  result["levels"] = write_sound_report(dir, signals, source, plots != nullptr, &spectra, plots);
   stages.lap("spectra_and_levels");
   result["sound_power"] = write_sound_power(dir, sound, highest_band, plots);
   stages.lap("sound_power");
@@ -267,7 +267,7 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget, bool progress) {
+                                const std::string& source, PlotBatch* plots, const TyreBudget* budget, bool progress) {
   const auto started = std::chrono::steady_clock::now();
   StageTimes stages;
   const std::unique_ptr<TyreRadiation> radiation = make_radiation(settings);
@@ -326,7 +326,7 @@ void TyreSoundStream::push(std::span<const double> tread_velocity) {
 }
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget) {
+                                const std::string& source, PlotBatch* plots, const TyreBudget* budget) {
   if (!stream.stream_) throw std::logic_error("write_tyre_sound: nothing was pushed to the radiation stream");
   const auto started = std::chrono::steady_clock::now();
   StageTimes stages;

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/gnuplot.hpp"
 #include "radiation/receivers.hpp"
 #include "radiation/tyre_radiation.hpp"
 
@@ -52,13 +53,13 @@ std::string receivers_outside_tyre(const TyreSoundSettings& settings);
 
 // Writes spectrum.csv, sound_power.csv, <receiver>.wav (and spb_passby.wav with an spb
 // receiver) and their plots into `dir`; returns the summary entries ("levels", "full_scale_pa",
-// "sound_power", "radiation"). tread_velocity: samples × tread points of the radiation mesh
+// "sound_power", "radiation"); the plots go to `plots` (none when null). tread_velocity: samples × tread points of the radiation mesh
 // (outward normal velocity, m/s) at `sample_rate`; speed in m/s. With a `budget` (the contact and
 // response lines of the run), also budget.csv and its plot (energy_budget_output.hpp) and the
 // summary entry "energy_budget". progress: a progress bar over the anchors on a terminal.
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, bool plots, const TyreBudget* budget = nullptr,
+                                const std::string& source, PlotBatch* plots, const TyreBudget* budget = nullptr,
                                 bool progress = true);
 
 // The radiation stage fed the tread velocity sample by sample as the run makes it, for a run too
@@ -88,7 +89,7 @@ class TyreSoundStream {
 
  private:
   friend nlohmann::json write_tyre_sound(const std::filesystem::path&, const TyreSoundSettings&, TyreSoundStream&, double,
-                                         const std::string&, bool, const TyreBudget*);
+                                         const std::string&, PlotBatch*, const TyreBudget*);
   const TyreSoundSettings& settings_;
   std::size_t samples_;
   double sample_rate_;
@@ -105,6 +106,6 @@ class TyreSoundStream {
 // write_tyre_sound for a run whose tread velocity went through `stream` (all its samples
 // pushed): the same outputs.
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream,
-                                double speed, const std::string& source, bool plots, const TyreBudget* budget = nullptr);
+                                double speed, const std::string& source, PlotBatch* plots, const TyreBudget* budget = nullptr);
 
 }  // namespace rollnoise
