@@ -2,8 +2,9 @@
 // The static contact under a load W (MODEL.md §2, "Preload and start"): the indentation d of
 // the body towards a flat road such that the contact forces, the solution of the LCP
 //   F ≥ 0,  gap = h − d + C·F ≥ 0,  Fᵀ·gap = 0,
-// add up to W. ΣF(d) is piecewise linear and increasing in d, so Newton's method on the
-// active set, kept inside a bisection bracket, ends on the exact d.
+// add up to W. ΣF(d) is piecewise linear and increasing in d: the secant of two trials on the
+// same contact set (Newton's step on that set), kept inside a regula-falsi bracket, ends on the
+// exact d. The trials share one PMatrixLcpSolver, warm-started and with its factor kept.
 #include <Eigen/Core>
 
 namespace rollnoise {
