@@ -65,25 +65,41 @@ class PMatrixLcpSolver {
 
   // Factorisations of the basic block so far (the rest were bordered updates).
   long factorisations() const noexcept { return factor_.factorisations(); }
+  // Whether the conjugate gradients of a pivoting iteration may stop as soon as the iteration's
+  // exchange is decided (the default; it is the same exchange); off, each block is solved to
+  // round-off, as the last iteration's always is.
+  void decide_early(bool on) noexcept { decide_early_ = on; }
   // Whether basic blocks are solved by conjugate gradients; their iterations so far.
   bool iterative() const noexcept { return iterative_; }
   long cg_iterations() const noexcept { return cg_iterations_; }
   const Eigen::MatrixXd& matrix() const noexcept { return *m_; }
 
  private:
-  // M_AA z_A = −q_A from z's values on A; false if it did not converge (z is then unusable).
-  bool conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z);
+  enum class Cg { converged, decided, failed };
+  // M_AA z_A = −q_A from z's values on A: converged; or stopped early with every sign test of the
+  // pivoting (z_i < −tolerance on A, w_i < −tolerance off it) decided as for the exact solution
+  // and some index infeasible, w = M·z + q then set off A (decided); or failed (z is then
+  // unusable).
+  Cg conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z, Eigen::VectorXd& w,
+                         double tolerance);
+  // Whether every sign test is decided with z's error on A at most z_error and w's (from mz_)
+  // off A at most w_error, and some index is infeasible.
+  bool signs_decided(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
+                     double w_error, double tolerance) const;
 
   std::shared_ptr<const Eigen::MatrixXd> m_;
   BorderedLu factor_;
   std::unique_ptr<WindowConvolution> product_;
   bool iterative_ = false;
+  bool decide_early_ = true;
   long cg_iterations_ = 0;
   PMatrixLcpResult result_;
   std::vector<char> shifted_;
   std::vector<Eigen::Index> active_;
-  // The last solution (the next warm start), and the conjugate gradients' vectors.
-  Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_;
+  // The last solution (the next warm start), and the conjugate gradients' vectors (mz_ = M·z).
+  Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_, mz_;
+  // ‖z's error‖₂ per ‖D^{-1/2}·residual‖₂ on any basic block, and M's largest row 2-norm.
+  double error_per_residual_ = 0.0, row_norm_ = 0.0;
 };
 
 // Whether M(new_index[a], new_index[b]) = M(a, b) for every pair that stays, to `tolerance`
