@@ -145,7 +145,15 @@ PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity, std
     iterative_ = symmetric && radius < 1.0 && (1.0 + radius) / (1.0 - radius) <= 25.0;
     if (iterative_) {
       error_per_residual_ = 1.0 / ((1.0 - radius) * std::sqrt(m_->diagonal().minCoeff()));
-      row_norm_ = m_->rowwise().norm().maxCoeff();
+      // Off the block, w's error sums M(i, a)·e_a over a ≠ i: M's rows without their diagonal.
+      const Eigen::MatrixXd coupling = *m_ - Eigen::MatrixXd(m_->diagonal().asDiagonal());
+      coupling_row_norm_ = coupling.rowwise().norm().maxCoeff();
+      coupling_row_sum_ = coupling.cwiseAbs().rowwise().sum().maxCoeff();
+      // Varah's bound (Linear Algebra Appl. 11 (1975) 3–5): a strictly row diagonally dominant
+      // block has ‖M_AA⁻¹‖∞ ≤ 1/min_i (M_ii − Σ_{j≠i} |M_ij|), a margin that a principal block
+      // only widens. Without dominance only the 2-norm bound is used.
+      const double dominance = (m_->diagonal() - coupling.cwiseAbs().rowwise().sum()).minCoeff();
+      error_per_max_residual_ = dominance > 0.0 ? 1.0 / dominance : INFINITY;
     }
   }
   result_.z = Eigen::VectorXd::Zero(n);
@@ -186,6 +194,7 @@ const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
   if (q.size() != m_->rows()) throw std::invalid_argument("P-matrix LCP: sizes differ");
   if (result_.basic.empty()) result_.basic = penetrating(q);
   result_.z = last_z_;  // the warm start of the conjugate gradients
+  mz_valid_ = false;    // M·z is for the last q's window (relabel moves z)
   pivot(q, active_, result_,
         [this, &q](const std::vector<char>& basic, const std::vector<Eigen::Index>&, Eigen::VectorXd& z,
                    Eigen::VectorXd& w, double tolerance, bool fresh) {
@@ -196,6 +205,7 @@ const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
           }
           if (fresh) factor_.invalidate();
           factor_.solve(basic, q, z);
+          mz_valid_ = false;
           return false;
         },
         [this](const Eigen::VectorXd& z, const std::vector<Eigen::Index>& active, Eigen::VectorXd& w) {
@@ -212,15 +222,29 @@ PMatrixLcpSolver::Cg PMatrixLcpSolver::conjugate_gradients(const std::vector<cha
   // FFT, kept whole (mz_ = M·z over all indices, updated with each step as r is) so that w off
   // the block is known at every iterate without a product of its own.
   const Eigen::Index n = q.size();
+  // M·z of the last pivoting iteration's z, carried along: z loses the indices that left the
+  // block (those that enter had z = 0), whose columns of M are taken off when they are fewer
+  // than a product's cost (a column is n multiply-adds, a product a few dozen n).
+  Eigen::Index leaving = 0;
+  if (mz_valid_ && decide_early_)
+    for (Eigen::Index i = 0; i < n; ++i) leaving += !basic[static_cast<std::size_t>(i)] && z(i) != 0.0;
+  if (mz_valid_ && decide_early_ && leaving <= kLeavingColumns) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!basic[static_cast<std::size_t>(i)] && z(i) != 0.0) mz_.noalias() -= z(i) * m_->col(i);
+  }
   for (Eigen::Index i = 0; i < n; ++i) mask_(i) = basic[static_cast<std::size_t>(i)] ? 1.0 : 0.0;
   z.array() *= mask_.array();
+  if (!(mz_valid_ && decide_early_ && leaving <= kLeavingColumns)) product_->apply(z, mz_);
+  mz_valid_ = false;
   const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
   const double stop = 1e-13 * scale;
   // Round-off of the FFT products and of mz_'s updates (relative 1e-15 or so) is far inside this.
   const double margin = 1e-12 * scale;
-  product_->apply(z, mz_);
   r_ = (-q - mz_).cwiseProduct(mask_);
-  if (r_.cwiseAbs().maxCoeff() <= stop) return Cg::converged;
+  if (r_.cwiseAbs().maxCoeff() <= stop) {
+    mz_valid_ = true;
+    return Cg::converged;
+  }
   s_ = r_.cwiseProduct(inverse_diagonal_);
   p_ = s_;
   double rs = r_.dot(s_);
@@ -233,17 +257,26 @@ PMatrixLcpSolver::Cg PMatrixLcpSolver::conjugate_gradients(const std::vector<cha
     mz_.noalias() += alpha * mp_;
     r_.noalias() -= alpha * mp_.cwiseProduct(mask_);
     ++cg_iterations_;
-    if (r_.cwiseAbs().maxCoeff() <= stop) return Cg::converged;
+    const double largest = r_.cwiseAbs().maxCoeff();
+    if (largest <= stop) {
+      mz_valid_ = true;
+      return Cg::converged;
+    }
     s_ = r_.cwiseProduct(inverse_diagonal_);
     const double next = r_.dot(s_);
-    // The error e = M_AA⁻¹·r of z on the block: ‖e‖∞ ≤ ‖e‖₂ ≤ ‖D^{-1/2}‖·‖S_AA⁻¹‖·‖D^{-1/2}r‖₂
-    // with S = D^{-1/2}·M·D^{-1/2} (D = diag M), and ‖D^{-1/2}r‖₂² = rᵀD⁻¹r = `next`; off the
-    // block w's error is M_NA·e, at most ‖e‖₂ times M's largest row 2-norm. If every sign test
-    // of the pivoting is decided beyond these bounds, and some index is infeasible, the exact
-    // solve would exchange the same indices: stop here.
-    const double z_error = std::sqrt(std::max(next, 0.0)) * error_per_residual_ + margin;
-    if (decide_early_ && signs_decided(basic, q, z, z_error, row_norm_ * z_error + margin, tolerance)) {
+    // The error e = M_AA⁻¹·r of z on the block: ‖e‖₂ ≤ ‖D^{-1/2}‖·‖S_AA⁻¹‖·‖D^{-1/2}r‖₂ with
+    // S = D^{-1/2}·M·D^{-1/2} (D = diag M), and ‖D^{-1/2}r‖₂² = rᵀD⁻¹r = `next`; and ‖e‖∞ ≤
+    // ‖M_AA⁻¹‖∞·‖r‖∞ by Varah's bound. Off the block w's error is M_NA·e, at most ‖e‖₂ times the
+    // largest 2-norm, or ‖e‖∞ times the largest 1-norm, of M's rows without their diagonal. If
+    // every sign test of the pivoting is decided beyond these bounds, and some index is
+    // infeasible, the exact solve would exchange the same indices: stop here.
+    const double error_2 = std::sqrt(std::max(next, 0.0)) * error_per_residual_;
+    const double error_max = largest * error_per_max_residual_;
+    const double z_error = std::min(error_2, error_max) + margin;
+    const double w_error = std::min(coupling_row_norm_ * error_2, coupling_row_sum_ * error_max) + margin;
+    if (decide_early_ && signs_decided(basic, q, z, z_error, w_error, tolerance)) {
       w = mz_ + q;
+      mz_valid_ = true;
       return Cg::decided;
     }
     p_ = s_ + (next / rs) * p_;

@@ -8,6 +8,7 @@
 // least-index pivot, which terminates finitely for P-matrices, when it does not. Each
 // iteration solves the active block: solve_pmatrix_lcp with a dense LU (the reference), the
 // PMatrixLcpSolver of a sequence of nearby problems with a factor kept across them.
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -66,8 +67,9 @@ class PMatrixLcpSolver {
   // Factorisations of the basic block so far (the rest were bordered updates).
   long factorisations() const noexcept { return factor_.factorisations(); }
   // Whether the conjugate gradients of a pivoting iteration may stop as soon as the iteration's
-  // exchange is decided (the default; it is the same exchange); off, each block is solved to
-  // round-off, as the last iteration's always is.
+  // exchange is decided (the default; it is the same exchange), and the next iteration's start
+  // from the last M·z; off, each block is solved afresh to round-off, as the last iteration's
+  // always is (the solver as it was, kept as the tests' reference).
   void decide_early(bool on) noexcept { decide_early_ = on; }
   // Whether basic blocks are solved by conjugate gradients; their iterations so far.
   bool iterative() const noexcept { return iterative_; }
@@ -98,8 +100,13 @@ class PMatrixLcpSolver {
   std::vector<Eigen::Index> active_;
   // The last solution (the next warm start), and the conjugate gradients' vectors (mz_ = M·z).
   Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_, mz_;
-  // ‖z's error‖₂ per ‖D^{-1/2}·residual‖₂ on any basic block, and M's largest row 2-norm.
-  double error_per_residual_ = 0.0, row_norm_ = 0.0;
+  // Bounds on any basic block: ‖z's error‖₂ per ‖D^{-1/2}·residual‖₂, ‖z's error‖∞ per
+  // ‖residual‖∞, and the largest 2-norm and 1-norm of M's rows without their diagonal.
+  // Whether mz_ = M·z for the z of the last pivoting iteration; up to how many indices leaving
+  // the block it is updated by columns of M rather than by a product.
+  bool mz_valid_ = false;
+  static constexpr Eigen::Index kLeavingColumns = 32;
+  double error_per_residual_ = 0.0, error_per_max_residual_ = INFINITY, coupling_row_norm_ = 0.0, coupling_row_sum_ = 0.0;
 };
 
 // Whether M(new_index[a], new_index[b]) = M(a, b) for every pair that stays, to `tolerance`
