@@ -44,8 +44,11 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
 // at most 25 by Gershgorin's bound (the plate with its Winkler tread: a point's own compliance is
 // 4–5 times its coupling to the whole patch), each basic block is solved by preconditioned
 // conjugate gradients from the last solution instead: a dozen FFT products, no factorisation.
-// The factor stays the fallback, and the stopping test (residual 1e-13 of max |q|) keeps the
-// KKT conditions to round-off. (ContactWindow: window_convolution.hpp.)
+// The factor stays the fallback. A pivoting iteration's conjugate gradients stop as soon as
+// every sign test of the exchange is decided beyond a bound on their error (the exchange is then
+// the exact solve's), or at a residual of 1e-13 of max |q|; the last iteration's, once all signs
+// are decided feasible, at 1e-11 of it: KKT conditions to about 1e-11, scaled.
+// (ContactWindow: window_convolution.hpp.)
 class PMatrixLcpSolver {
  public:
   // `capacity`: the most indices by which the basic set may drift from the factorised one
@@ -67,9 +70,10 @@ class PMatrixLcpSolver {
   // Factorisations of the basic block so far (the rest were bordered updates).
   long factorisations() const noexcept { return factor_.factorisations(); }
   // Whether the conjugate gradients of a pivoting iteration may stop as soon as the iteration's
-  // exchange is decided (the default; it is the same exchange), and the next iteration's start
-  // from the last M·z; off, each block is solved afresh to round-off, as the last iteration's
-  // always is (the solver as it was, kept as the tests' reference).
+  // exchange is decided (the default; it is the same exchange), the last one's once all signs
+  // are decided feasible and the residual is 1e-11 of max |q|, and the next iteration start
+  // from the last M·z; off, each block is solved afresh to 1e-13 (the solver as it was, kept as
+  // the tests' reference).
   void decide_early(bool on) noexcept { decide_early_ = on; }
   // Whether basic blocks are solved by conjugate gradients; their iterations so far.
   bool iterative() const noexcept { return iterative_; }
@@ -85,8 +89,9 @@ class PMatrixLcpSolver {
   Cg conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z, Eigen::VectorXd& w,
                          double tolerance);
   // Whether every sign test is decided with z's error on A at most z_error and w's (from mz_)
-  // off A at most w_error, and some index is infeasible.
-  bool signs_decided(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
+  // off A at most w_error, and if so whether some index is infeasible.
+  enum class Signs { undecided, infeasible, feasible };
+  Signs decide_signs(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
                      double w_error, double tolerance) const;
 
   std::shared_ptr<const Eigen::MatrixXd> m_;

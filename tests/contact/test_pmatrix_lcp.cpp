@@ -328,7 +328,8 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
   // A plate-like window matrix (a Winkler tread's own compliance, coupled smoothly to the whole
   // patch by a belt, scaled condition number about 1.6): conjugate gradients that stop once a
   // pivoting iteration's exchange is decided must take the exact solves' path, pivot for pivot,
-  // and end at the same solution, which the dense reference confirms.
+  // and end at the same solution, which the dense reference confirms (to the last solve's
+  // residual of 1e-11 rather than 1e-13).
   const Window w{48, 8};
   const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
     return (dx == 0 && dy == 0 ? 1.0 : 0.0) + 0.004 * std::exp(-std::sqrt(dx * dx + 4.0 * dy * dy) / 5.0);
@@ -360,7 +361,8 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
     ASSERT_EQ(a.iterations, b.iterations) << "step " << step;
     ASSERT_EQ(a.basic, b.basic) << "step " << step;
     ASSERT_EQ(a.basic, reference.basic) << "step " << step;
-    ASSERT_LE(kkt_violation(m, q, a.z), 1e-10) << "step " << step;
+    // The KKT conditions to 1e-10 with a margin: the last solve stops at a residual of 1e-11.
+    ASSERT_LE(kkt_violation(m, q, a.z), 2e-11) << "step " << step;
     ASSERT_LE((a.z - b.z).cwiseAbs().maxCoeff(), 1e-10 * b.z.cwiseAbs().maxCoeff()) << "step " << step;
     ASSERT_LE((a.z - reference.z).cwiseAbs().maxCoeff(), 1e-10 * reference.z.cwiseAbs().maxCoeff()) << "step " << step;
     pivots += a.iterations;
