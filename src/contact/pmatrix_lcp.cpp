@@ -14,10 +14,15 @@
 namespace rollnoise {
 namespace {
 
-// Block principal pivoting from the basic set in result.basic. solve_basic(basic, active, z,
-// fresh) puts M_AA⁻¹(−q_A) on the basic indices A of z and zeros elsewhere (z holds the last
-// iterate on entry); `fresh` asks it not to reuse factors, when the last solution left a
-// residual beyond round-off on A. multiply(z, w) sets w = M·z.
+// Block principal pivoting from the basic set in result.basic. solve_basic(basic, active, z, w,
+// tolerance, fresh) puts M_AA⁻¹(−q_A) on the basic indices A of z and zeros elsewhere (z holds
+// the last iterate on entry); `fresh` asks it not to reuse factors, when the last solution left a
+// residual beyond round-off on A. It may stop short of M_AA⁻¹(−q_A) once every sign test below
+// (z_i < −tolerance on A, w_i < −tolerance off it) is decided as it would be for the exact
+// solution and some index is infeasible: it then returns true with w = M·z + q off A, and this
+// iteration exchanges exactly the indices that the exact solution's would (with every test decided
+// feasible, z need only meet the KKT conditions: conjugate_gradients). multiply(z, w) sets
+// w = M·z.
 template <class SolveBasic, class Multiply>
 void pivot(const Eigen::VectorXd& q, std::vector<Eigen::Index>& active, PMatrixLcpResult& result,
            SolveBasic&& solve_basic, Multiply&& multiply) {
@@ -34,7 +39,7 @@ void pivot(const Eigen::VectorXd& q, std::vector<Eigen::Index>& active, PMatrixL
     // w = M·z + q (z is zero off the basic set). A residual on the basic set beyond round-off
     // means the factors in solve_basic went stale: solve once more, fresh.
     for (const bool fresh : {false, true}) {
-      solve_basic(basic, active, result.z, fresh);
+      if (solve_basic(basic, active, result.z, result.w, tolerance, fresh)) break;
       multiply(result.z, active, result.w);
       result.w += q;
       double residual = 0.0;
@@ -72,9 +77,9 @@ void multiply_basic_columns(const Eigen::MatrixXd& m, const Eigen::VectorXd& z, 
   for (const Eigen::Index a : active) w.noalias() += m.col(a) * z(a);
 }
 
-// Gershgorin's bound on the condition number of D^{-1/2}·M·D^{-1/2} (D = diag M), or infinity
-// when the scaled matrix is not diagonally dominant.
-double scaled_condition_bound(const Eigen::MatrixXd& m) {
+// Gershgorin's radius of D^{-1/2}·M·D^{-1/2} − I (D = diag M): the scaled matrix's eigenvalues
+// lie within it of 1. Infinity when M has a diagonal entry ≤ 0.
+double scaled_gershgorin_radius(const Eigen::MatrixXd& m) {
   const Eigen::VectorXd d = m.diagonal();
   if (d.minCoeff() <= 0.0) return INFINITY;
   const Eigen::VectorXd root = d.cwiseSqrt().cwiseInverse();
@@ -85,7 +90,7 @@ double scaled_condition_bound(const Eigen::MatrixXd& m) {
       if (j != i) row += std::abs(m(i, j)) * root(j);
     radius = std::max(radius, row * root(i));
   }
-  return radius < 1.0 ? (1.0 + radius) / (1.0 - radius) : INFINITY;
+  return radius;
 }
 
 std::vector<char> penetrating(const Eigen::VectorXd& q) {
@@ -105,10 +110,11 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
   result.basic = start && static_cast<Eigen::Index>(start->size()) == n ? *start : penetrating(q);
   std::vector<Eigen::Index> active;
   pivot(q, active, result,
-        [&m, &q](const std::vector<char>&, const std::vector<Eigen::Index>& set, Eigen::VectorXd& z, bool) {
+        [&m, &q](const std::vector<char>&, const std::vector<Eigen::Index>& set, Eigen::VectorXd& z, Eigen::VectorXd&,
+                 double, bool) {
           const auto p = static_cast<Eigen::Index>(set.size());
           z.setZero();
-          if (p == 0) return;
+          if (p == 0) return false;
           Eigen::MatrixXd block(p, p);
           Eigen::VectorXd rhs(p);
           for (Eigen::Index a = 0; a < p; ++a) {
@@ -117,6 +123,7 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
           }
           const Eigen::VectorXd za = block.partialPivLu().solve(rhs);
           for (Eigen::Index a = 0; a < p; ++a) z(set[a]) = za(a);
+          return false;
         },
         [&m](const Eigen::VectorXd& z, const std::vector<Eigen::Index>& set, Eigen::VectorXd& w) {
           multiply_basic_columns(m, z, set, w);
@@ -132,7 +139,23 @@ PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity, std
       throw std::invalid_argument("P-matrix LCP: the window's points differ from the matrix's size");
     product_ = std::make_unique<WindowConvolution>(*m_, window->window, window->lateral);
     const bool symmetric = (*m_ - m_->transpose()).cwiseAbs().maxCoeff() <= 1e-14 * m_->cwiseAbs().maxCoeff();
-    iterative_ = symmetric && scaled_condition_bound(*m_) <= 25.0;
+    // The condition number of the scaled matrix is at most (1 + radius)/(1 − radius) ≤ 25, and
+    // its smallest eigenvalue, and by Cauchy's interlacing that of every principal block, at
+    // least 1 − radius: the bound on the conjugate gradients' error (conjugate_gradients).
+    const double radius = scaled_gershgorin_radius(*m_);
+    iterative_ = symmetric && radius < 1.0 && (1.0 + radius) / (1.0 - radius) <= 25.0;
+    if (iterative_) {
+      error_per_residual_ = 1.0 / ((1.0 - radius) * std::sqrt(m_->diagonal().minCoeff()));
+      // Off the block, w's error sums M(i, a)·e_a over a ≠ i: M's rows without their diagonal.
+      const Eigen::MatrixXd coupling = *m_ - Eigen::MatrixXd(m_->diagonal().asDiagonal());
+      coupling_row_norm_ = coupling.rowwise().norm().maxCoeff();
+      coupling_row_sum_ = coupling.cwiseAbs().rowwise().sum().maxCoeff();
+      // Varah's bound (Linear Algebra Appl. 11 (1975) 3–5): a strictly row diagonally dominant
+      // block has ‖M_AA⁻¹‖∞ ≤ 1/min_i (M_ii − Σ_{j≠i} |M_ij|), a margin that a principal block
+      // only widens. Without dominance only the 2-norm bound is used.
+      const double dominance = (m_->diagonal() - coupling.cwiseAbs().rowwise().sum()).minCoeff();
+      error_per_max_residual_ = dominance > 0.0 ? 1.0 / dominance : INFINITY;
+    }
   }
   result_.z = Eigen::VectorXd::Zero(n);
   result_.w.resize(n);
@@ -141,7 +164,7 @@ PMatrixLcpSolver::PMatrixLcpSolver(Eigen::MatrixXd m, Eigen::Index capacity, std
   last_z_ = Eigen::VectorXd::Zero(n);
   shifted_z_ = last_z_;
   inverse_diagonal_ = m_->diagonal().cwiseInverse();
-  mask_ = r_ = s_ = p_ = mp_ = last_z_;
+  mask_ = r_ = s_ = p_ = mp_ = mz_ = last_z_;
 }
 
 PMatrixLcpSolver::~PMatrixLcpSolver() = default;
@@ -172,11 +195,19 @@ const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
   if (q.size() != m_->rows()) throw std::invalid_argument("P-matrix LCP: sizes differ");
   if (result_.basic.empty()) result_.basic = penetrating(q);
   result_.z = last_z_;  // the warm start of the conjugate gradients
+  mz_valid_ = false;    // M·z is for the last q's window (relabel moves z)
   pivot(q, active_, result_,
-        [this, &q](const std::vector<char>& basic, const std::vector<Eigen::Index>&, Eigen::VectorXd& z, bool fresh) {
-          if (iterative_ && !fresh && conjugate_gradients(basic, q, z)) return;
+        [this, &q](const std::vector<char>& basic, const std::vector<Eigen::Index>&, Eigen::VectorXd& z,
+                   Eigen::VectorXd& w, double tolerance, bool fresh) {
+          if (iterative_ && !fresh) {
+            const Cg outcome = conjugate_gradients(basic, q, z, w, tolerance);
+            if (outcome == Cg::decided) return true;
+            if (outcome == Cg::converged) return false;
+          }
           if (fresh) factor_.invalidate();
           factor_.solve(basic, q, z);
+          mz_valid_ = false;
+          return false;
         },
         [this](const Eigen::VectorXd& z, const std::vector<Eigen::Index>& active, Eigen::VectorXd& w) {
           if (product_) product_->apply(z, w);
@@ -186,34 +217,104 @@ const PMatrixLcpResult& PMatrixLcpSolver::solve(const Eigen::VectorXd& q) {
   return result_;
 }
 
-bool PMatrixLcpSolver::conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z) {
-  // Jacobi-preconditioned CG on the basic block, the other indices masked out; the products by FFT.
+PMatrixLcpSolver::Cg PMatrixLcpSolver::conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q,
+                                                           Eigen::VectorXd& z, Eigen::VectorXd& w, double tolerance) {
+  // Jacobi-preconditioned CG on the basic block, the other indices masked out; the products by
+  // FFT, kept whole (mz_ = M·z over all indices, updated with each step as r is) so that w off
+  // the block is known at every iterate without a product of its own.
   const Eigen::Index n = q.size();
+  // M·z of the last pivoting iteration's z, carried along: z loses the indices that left the
+  // block (those that enter had z = 0), whose columns of M are taken off when they are fewer
+  // than a product's cost (a column is n multiply-adds, a product a few dozen n).
+  Eigen::Index leaving = 0;
+  if (mz_valid_ && decide_early_)
+    for (Eigen::Index i = 0; i < n; ++i) leaving += !basic[static_cast<std::size_t>(i)] && z(i) != 0.0;
+  if (mz_valid_ && decide_early_ && leaving <= kLeavingColumns) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!basic[static_cast<std::size_t>(i)] && z(i) != 0.0) mz_.noalias() -= z(i) * m_->col(i);
+  }
   for (Eigen::Index i = 0; i < n; ++i) mask_(i) = basic[static_cast<std::size_t>(i)] ? 1.0 : 0.0;
   z.array() *= mask_.array();
-  const double tolerance = 1e-13 * (q.cwiseAbs().maxCoeff() + 1e-300);
-  product_->apply(z, mp_);
-  r_ = (-q - mp_).cwiseProduct(mask_);
-  if (r_.cwiseAbs().maxCoeff() <= tolerance) return true;
+  if (!(mz_valid_ && decide_early_ && leaving <= kLeavingColumns)) product_->apply(z, mz_);
+  mz_valid_ = false;
+  const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
+  const double stop = 1e-13 * scale;
+  // Once every sign is decided feasible, the residual need only be this: the KKT conditions
+  // hold to about 1e-11 scaled (8e-12 on the plate's rolling steps), a tenth of the 1e-10
+  // required, and z is within a few 1e-11 of the fully converged one.
+  const double close = 1e-11 * scale;
+  // Round-off of the FFT products and of mz_'s updates (relative 1e-15 or so) is far inside this.
+  const double margin = 1e-12 * scale;
+  r_ = (-q - mz_).cwiseProduct(mask_);
+  if (r_.cwiseAbs().maxCoeff() <= stop) {
+    mz_valid_ = true;
+    return Cg::converged;
+  }
   s_ = r_.cwiseProduct(inverse_diagonal_);
   p_ = s_;
   double rs = r_.dot(s_);
   for (int iteration = 0; iteration < 500; ++iteration) {
     product_->apply(p_, mp_);
-    mp_.array() *= mask_.array();
-    const double curvature = p_.dot(mp_);
-    if (!(curvature > 0.0)) return false;
+    const double curvature = p_.dot(mp_);  // p is zero off the block
+    if (!(curvature > 0.0)) return Cg::failed;
     const double alpha = rs / curvature;
     z.noalias() += alpha * p_;
-    r_.noalias() -= alpha * mp_;
+    mz_.noalias() += alpha * mp_;
+    r_.noalias() -= alpha * mp_.cwiseProduct(mask_);
     ++cg_iterations_;
-    if (r_.cwiseAbs().maxCoeff() <= tolerance) return true;
+    const double largest = r_.cwiseAbs().maxCoeff();
+    if (largest <= stop) {
+      mz_valid_ = true;
+      return Cg::converged;
+    }
     s_ = r_.cwiseProduct(inverse_diagonal_);
     const double next = r_.dot(s_);
+    // The error e = M_AA⁻¹·r of z on the block: ‖e‖₂ ≤ ‖D^{-1/2}‖·‖S_AA⁻¹‖·‖D^{-1/2}r‖₂ with
+    // S = D^{-1/2}·M·D^{-1/2} (D = diag M), and ‖D^{-1/2}r‖₂² = rᵀD⁻¹r = `next`; and ‖e‖∞ ≤
+    // ‖M_AA⁻¹‖∞·‖r‖∞ by Varah's bound. Off the block w's error is M_NA·e, at most ‖e‖₂ times the
+    // largest 2-norm, or ‖e‖∞ times the largest 1-norm, of M's rows without their diagonal. If
+    // every sign test of the pivoting is decided beyond these bounds, and some index is
+    // infeasible, the exact solve would exchange the same indices: stop here.
+    const double error_2 = std::sqrt(std::max(next, 0.0)) * error_per_residual_;
+    const double error_max = largest * error_per_max_residual_;
+    const double z_error = std::min(error_2, error_max) + margin;
+    const double w_error = std::min(coupling_row_norm_ * error_2, coupling_row_sum_ * error_max) + margin;
+    if (decide_early_) {
+      const Signs signs = decide_signs(basic, q, z, z_error, w_error, tolerance);
+      if (signs == Signs::infeasible) {
+        w = mz_ + q;
+        mz_valid_ = true;
+        return Cg::decided;
+      }
+      // Every index feasible as for the exact solution: the LCP's solution is this block's, and
+      // z need only meet the KKT conditions (to 1e-10, scaled) with a margin.
+      if (signs == Signs::feasible && largest <= close) {
+        mz_valid_ = true;
+        return Cg::converged;
+      }
+    }
     p_ = s_ + (next / rs) * p_;
     rs = next;
   }
-  return false;
+  return Cg::failed;
+}
+
+PMatrixLcpSolver::Signs PMatrixLcpSolver::decide_signs(const std::vector<char>& basic, const Eigen::VectorXd& q,
+                                                       const Eigen::VectorXd& z, double z_error, double w_error,
+                                                       double tolerance) const {
+  bool infeasible = false;
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const bool on_block = basic[static_cast<std::size_t>(i)] != 0;
+    const double value = on_block ? z(i) : mz_(i) + q(i);
+    const double error = on_block ? z_error : w_error;
+    if (value - error >= -tolerance) continue;    // feasible, whatever the error
+    if (value + error < -tolerance) {             // infeasible, whatever the error
+      infeasible = true;
+      continue;
+    }
+    return Signs::undecided;
+  }
+  return infeasible ? Signs::infeasible : Signs::feasible;
 }
 
 bool matrix_unchanged_by(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& new_index, double tolerance) {

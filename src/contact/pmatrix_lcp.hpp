@@ -8,6 +8,7 @@
 // least-index pivot, which terminates finitely for P-matrices, when it does not. Each
 // iteration solves the active block: solve_pmatrix_lcp with a dense LU (the reference), the
 // PMatrixLcpSolver of a sequence of nearby problems with a factor kept across them.
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -43,8 +44,11 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
 // at most 25 by Gershgorin's bound (the plate with its Winkler tread: a point's own compliance is
 // 4–5 times its coupling to the whole patch), each basic block is solved by preconditioned
 // conjugate gradients from the last solution instead: a dozen FFT products, no factorisation.
-// The factor stays the fallback, and the stopping test (residual 1e-13 of max |q|) keeps the
-// KKT conditions to round-off. (ContactWindow: window_convolution.hpp.)
+// The factor stays the fallback. A pivoting iteration's conjugate gradients stop as soon as
+// every sign test of the exchange is decided beyond a bound on their error (the exchange is then
+// the exact solve's), or at a residual of 1e-13 of max |q|; the last iteration's, once all signs
+// are decided feasible, at 1e-11 of it: KKT conditions to about 1e-11, scaled.
+// (ContactWindow: window_convolution.hpp.)
 class PMatrixLcpSolver {
  public:
   // `capacity`: the most indices by which the basic set may drift from the factorised one
@@ -65,25 +69,49 @@ class PMatrixLcpSolver {
 
   // Factorisations of the basic block so far (the rest were bordered updates).
   long factorisations() const noexcept { return factor_.factorisations(); }
+  // Whether the conjugate gradients of a pivoting iteration may stop as soon as the iteration's
+  // exchange is decided (the default; it is the same exchange), the last one's once all signs
+  // are decided feasible and the residual is 1e-11 of max |q|, and the next iteration start
+  // from the last M·z; off, each block is solved afresh to 1e-13 (the solver as it was, kept as
+  // the tests' reference).
+  void decide_early(bool on) noexcept { decide_early_ = on; }
   // Whether basic blocks are solved by conjugate gradients; their iterations so far.
   bool iterative() const noexcept { return iterative_; }
   long cg_iterations() const noexcept { return cg_iterations_; }
   const Eigen::MatrixXd& matrix() const noexcept { return *m_; }
 
  private:
-  // M_AA z_A = −q_A from z's values on A; false if it did not converge (z is then unusable).
-  bool conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z);
+  enum class Cg { converged, decided, failed };
+  // M_AA z_A = −q_A from z's values on A: converged; or stopped early with every sign test of the
+  // pivoting (z_i < −tolerance on A, w_i < −tolerance off it) decided as for the exact solution
+  // and some index infeasible, w = M·z + q then set off A (decided); or failed (z is then
+  // unusable).
+  Cg conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z, Eigen::VectorXd& w,
+                         double tolerance);
+  // Whether every sign test is decided with z's error on A at most z_error and w's (from mz_)
+  // off A at most w_error, and if so whether some index is infeasible.
+  enum class Signs { undecided, infeasible, feasible };
+  Signs decide_signs(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
+                     double w_error, double tolerance) const;
 
   std::shared_ptr<const Eigen::MatrixXd> m_;
   BorderedLu factor_;
   std::unique_ptr<WindowConvolution> product_;
   bool iterative_ = false;
+  bool decide_early_ = true;
   long cg_iterations_ = 0;
   PMatrixLcpResult result_;
   std::vector<char> shifted_;
   std::vector<Eigen::Index> active_;
-  // The last solution (the next warm start), and the conjugate gradients' vectors.
-  Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_;
+  // The last solution (the next warm start), and the conjugate gradients' vectors (mz_ = M·z).
+  Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_, mz_;
+  // Bounds on any basic block: ‖z's error‖₂ per ‖D^{-1/2}·residual‖₂, ‖z's error‖∞ per
+  // ‖residual‖∞, and the largest 2-norm and 1-norm of M's rows without their diagonal.
+  // Whether mz_ = M·z for the z of the last pivoting iteration; up to how many indices leaving
+  // the block it is updated by columns of M rather than by a product.
+  bool mz_valid_ = false;
+  static constexpr Eigen::Index kLeavingColumns = 32;
+  double error_per_residual_ = 0.0, error_per_max_residual_ = INFINITY, coupling_row_norm_ = 0.0, coupling_row_sum_ = 0.0;
 };
 
 // Whether M(new_index[a], new_index[b]) = M(a, b) for every pair that stays, to `tolerance`

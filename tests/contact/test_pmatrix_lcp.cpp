@@ -320,3 +320,56 @@ TEST(PMatrixLcp, WellConditionedSymmetricStepsByConjugateGradientsMatchTheFactor
 
 }  // namespace
 }  // namespace rollnoise
+
+namespace rollnoise {
+namespace {
+
+TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
+  // A plate-like window matrix (a Winkler tread's own compliance, coupled smoothly to the whole
+  // patch by a belt, scaled condition number about 1.6): conjugate gradients that stop once a
+  // pivoting iteration's exchange is decided must take the exact solves' path, pivot for pivot,
+  // and end at the same solution, which the dense reference confirms (to the last solve's
+  // residual of 1e-11 rather than 1e-13).
+  const Window w{48, 8};
+  const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
+    return (dx == 0 && dy == 0 ? 1.0 : 0.0) + 0.004 * std::exp(-std::sqrt(dx * dx + 4.0 * dy * dy) / 5.0);
+  });
+  const std::vector<Eigen::Index> shift = shift_back(w);
+  PMatrixLcpSolver early(m, 48, ContactWindow{w.length, w.lateral});
+  PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
+  exact.decide_early(false);
+  ASSERT_TRUE(early.iterative());
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> normal;
+  std::vector<double> road(500);
+  for (double& r : road) r = 0.3 * normal(rng);
+  long pivots = 0;
+  for (int step = 0; step < 150; ++step) {
+    Eigen::VectorXd q(w.points());
+    for (int j = 0; j < w.lateral; ++j)
+      for (int i = 0; i < w.length; ++i) {
+        const double x = i - 0.5 * w.length;
+        q(w.index(i, j)) = 0.004 * x * x - 1.0 - road[static_cast<std::size_t>(i + step + 37 * j) % road.size()];
+      }
+    if (step > 0) {
+      early.relabel(shift, true);
+      exact.relabel(shift, true);
+    }
+    const PMatrixLcpResult& a = early.solve(q);
+    const PMatrixLcpResult& b = exact.solve(q);
+    const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
+    ASSERT_EQ(a.iterations, b.iterations) << "step " << step;
+    ASSERT_EQ(a.basic, b.basic) << "step " << step;
+    ASSERT_EQ(a.basic, reference.basic) << "step " << step;
+    // The KKT conditions to 1e-10 with a margin: the last solve stops at a residual of 1e-11.
+    ASSERT_LE(kkt_violation(m, q, a.z), 2e-11) << "step " << step;
+    ASSERT_LE((a.z - b.z).cwiseAbs().maxCoeff(), 1e-10 * b.z.cwiseAbs().maxCoeff()) << "step " << step;
+    ASSERT_LE((a.z - reference.z).cwiseAbs().maxCoeff(), 1e-10 * reference.z.cwiseAbs().maxCoeff()) << "step " << step;
+    pivots += a.iterations;
+  }
+  EXPECT_GT(pivots, 100) << "the road should force exchanges at most steps";
+  EXPECT_LT(early.cg_iterations(), exact.cg_iterations()) << "no exchange was decided early";
+}
+
+}  // namespace
+}  // namespace rollnoise
