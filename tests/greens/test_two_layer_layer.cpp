@@ -193,8 +193,8 @@ TEST(TanhSqrt, TwoRootFormForAMinimalPolynomialOfDegreeTwo) {
   }
 }
 
-// layer_stiffness takes B·f(CB) as f(BC)·B, the intertwining B·f(CB) = f(BC)·B, which holds
-// for any 3×3 B and C (f(M) is a polynomial in M), a singular B included.
+// layer_stiffness computes B·f(CB) as f(BC)·B: the two agree for any 3×3 B and C (f(M) is a
+// polynomial in M, and B(CB)^j = (BC)^j B), a singular B included.
 TEST(TanhSqrt, MatrixFunctionIntertwinesProducts) {
   Eigen::Matrix3cd b, c;
   b << cd(0.0, -0.3), 1.0, 0.0,  //
