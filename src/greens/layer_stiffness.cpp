@@ -66,19 +66,19 @@ LayerStiffness layer_stiffness(const OrthotropicStiffness& s, cd modulus_factor,
       q11 * x * x + q66 * y * y - inertia, (q12 + q66) * x * y, -i * x * r13,  //
       (q12 + q66) * x * y, q66 * x * x + q22 * y * y - inertia, -i * y * r23;
 
-  // f(BC) and f(CB). An isotropic layer's roots are known: μ_P = k̃² − Ω̃²·C55/C11 and
-  // μ_S = k̃² − Ω̃² (twice), and its minimal polynomial is (x − μ_P)(x − μ_S) at every ω, the
-  // static Jordan block included: the two-point form is exact and needs no Schur form.
-  // Otherwise the general Schur–Parlett form.
-  Eigen::Matrix3cd fe, fo;
+  // f(BC), and f(CB) from it: B·f(CB) = f(BC)·B exactly (B(CB)^j = (BC)^j B for every power,
+  // and f(M) is a polynomial in M, the Hermite interpolant of f on the common spectrum of BC and
+  // CB; Higham 2008, Cor. 1.34), so one matrix function serves both families. An isotropic
+  // layer's roots are known: μ_P = k̃² − Ω̃²·C55/C11 and μ_S = k̃² − Ω̃² (twice), and its minimal
+  // polynomial is (x − μ_P)(x − μ_S) at every ω, the static Jordan block included: the
+  // two-point form is exact and needs no Schur form. Otherwise the general Schur–Parlett form.
+  Eigen::Matrix3cd fe;
   if (isotropic(s)) {
     const cd mu_s = x * x + y * y - inertia;
     const cd mu_p = x * x + y * y - inertia * (s.c55 / s.c11);
     fe = tanh_sqrt(Eigen::Matrix3cd(b * c), mu_s, mu_p);
-    fo = tanh_sqrt(Eigen::Matrix3cd(c * b), mu_s, mu_p);
   } else {
     fe = tanh_sqrt(Eigen::Matrix3cd(b * c));
-    fo = tanh_sqrt(Eigen::Matrix3cd(c * b));
   }
   // Symmetric family at the top face: O = Q·E, Q = C·f(BC).
   const Eigen::Matrix3cd q = c * fe;
@@ -94,8 +94,8 @@ LayerStiffness layer_stiffness(const OrthotropicStiffness& s, cd modulus_factor,
       ks(r, 1) += q(r + 1, 1);
     }
   }
-  // Antisymmetric family at the top face: E = R·O, R = B·f(CB).
-  const Eigen::Matrix3cd r = b * fo;
+  // Antisymmetric family at the top face: E = R·O, R = B·f(CB) = f(BC)·B.
+  const Eigen::Matrix3cd r = fe * b;
   // (u_x, u_y) = R[0:2,0] u_z + R_s (τ̃_xz, τ̃_yz): solve for the shear tractions.
   Eigen::Matrix3cd ka;
   {

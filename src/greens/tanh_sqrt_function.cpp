@@ -125,48 +125,67 @@ double tanh_sqrt_pole_distance(cd mu) {
   return best;
 }
 
-cd tanh_sqrt_divided(cd a, cd b) {
+namespace {
+
+// f[a, b] given f(a) and f(b) (used only when the points lie apart).
+cd divided(cd a, cd b, cd fa, cd fb) {
   const cd centre = 0.5 * (a + b);
   const double spread = 0.5 * magnitude(a - b);
   const double r = tanh_sqrt_pole_distance(centre);
   if (spread <= confluent_fraction * r) return derivatives(centre).first;
   if (spread <= close_fraction * r) return contour_divided<2>({a, b}, centre, r);
-  return divide(tanh_sqrt(a) - tanh_sqrt(b), a - b);
+  return divide(fa - fb, a - b);
 }
 
-cd tanh_sqrt_divided(cd a, cd b, cd c) {
+// f[a, b, c] given the pairs' divided differences (used only when the points lie apart).
+cd divided(cd a, cd b, cd c, cd fab, cd fbc, cd fac) {
   const cd centre = (a + b + c) / 3.0;
   const double spread = std::max({magnitude(a - centre), magnitude(b - centre), magnitude(c - centre)});
   const double r = tanh_sqrt_pole_distance(centre);
   if (spread <= confluent_fraction * r) return derivatives(centre).half_second;
   if (spread <= close_fraction * r) return contour_divided<3>({a, b, c}, centre, r);
   // The recursion divides by the widest pair: put it first and last.
-  std::array<cd, 3> z{a, b, c};
   const double ab = magnitude(a - b), bc = magnitude(b - c), ac = magnitude(a - c);
-  if (ab >= ac && ab >= bc) {
-    z = {a, c, b};
-  } else if (bc >= ac && bc >= ab) {
-    z = {b, a, c};
-  }
-  return divide(tanh_sqrt_divided(z[0], z[1]) - tanh_sqrt_divided(z[1], z[2]), z[0] - z[2]);
+  if (ab >= ac && ab >= bc) return divide(fac - fbc, a - b);  // z = (a, c, b)
+  if (bc >= ac && bc >= ab) return divide(fab - fac, b - c);  // z = (b, a, c)
+  return divide(fab - fbc, a - c);                            // z = (a, b, c)
+}
+
+}  // namespace
+
+cd tanh_sqrt_divided(cd a, cd b) {
+  const cd centre = 0.5 * (a + b);
+  const double spread = 0.5 * magnitude(a - b);
+  if (spread <= close_fraction * tanh_sqrt_pole_distance(centre)) return divided(a, b, 0.0, 0.0);
+  return divided(a, b, tanh_sqrt(a), tanh_sqrt(b));
+}
+
+cd tanh_sqrt_divided(cd a, cd b, cd c) {
+  return divided(a, b, c, tanh_sqrt_divided(a, b), tanh_sqrt_divided(b, c), tanh_sqrt_divided(a, c));
 }
 
 Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m) {
   const Eigen::ComplexSchur<Eigen::Matrix3cd> schur(m);
   const Eigen::Matrix3cd& t = schur.matrixT();
+  // Each value of f and each divided difference once: the three-point one reuses the pairs'.
+  const cd t0 = t(0, 0), t1 = t(1, 1), t2 = t(2, 2);
+  const cd f0 = tanh_sqrt(t0), f1 = tanh_sqrt(t1), f2 = tanh_sqrt(t2);
+  const cd f01 = divided(t0, t1, f0, f1), f12 = divided(t1, t2, f1, f2), f02 = divided(t0, t2, f0, f2);
   Eigen::Matrix3cd f = Eigen::Matrix3cd::Zero();
-  for (int i = 0; i < 3; ++i) f(i, i) = tanh_sqrt(t(i, i));
-  f(0, 1) = t(0, 1) * tanh_sqrt_divided(t(0, 0), t(1, 1));
-  f(1, 2) = t(1, 2) * tanh_sqrt_divided(t(1, 1), t(2, 2));
-  f(0, 2) = t(0, 2) * tanh_sqrt_divided(t(0, 0), t(2, 2)) +
-            t(0, 1) * t(1, 2) * tanh_sqrt_divided(t(0, 0), t(1, 1), t(2, 2));
+  f(0, 0) = f0;
+  f(1, 1) = f1;
+  f(2, 2) = f2;
+  f(0, 1) = t(0, 1) * f01;
+  f(1, 2) = t(1, 2) * f12;
+  f(0, 2) = t(0, 2) * f02 + t(0, 1) * t(1, 2) * divided(t0, t1, t2, f01, f12, f02);
   const Eigen::Matrix3cd& u = schur.matrixU();
   return u * f * u.adjoint();
 }
 
 Eigen::Matrix3cd tanh_sqrt(const Eigen::Matrix3cd& m, cd mu1, cd mu2) {
-  Eigen::Matrix3cd f = tanh_sqrt_divided(mu1, mu2) * m;
-  f.diagonal().array() += tanh_sqrt(mu1) - tanh_sqrt_divided(mu1, mu2) * mu1;
+  const cd slope = tanh_sqrt_divided(mu1, mu2);
+  Eigen::Matrix3cd f = slope * m;
+  f.diagonal().array() += tanh_sqrt(mu1) - slope * mu1;
   return f;
 }
 

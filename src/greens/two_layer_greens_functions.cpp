@@ -1,6 +1,9 @@
 #include "greens/two_layer_greens_functions.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -81,7 +84,7 @@ std::vector<double> asymptote_samples(const Sampling& s, double a, double densit
 }  // namespace
 
 TwoLayerGreensFunctions::TwoLayerGreensFunctions(const TwoLayerTyre& tyre, double time_step, int samples,
-                                                 int oversampling)
+                                                 int oversampling, unsigned threads)
     : tyre_(&tyre), dt_(time_step), samples_(samples) {
   if (!std::isfinite(time_step) || !(time_step > 0.0)) throw std::invalid_argument("two_layer: time step must be > 0");
   if (samples < 4 || samples % 2 != 0) throw std::invalid_argument("two_layer: the number of samples must be even and >= 4");
@@ -109,30 +112,54 @@ TwoLayerGreensFunctions::TwoLayerGreensFunctions(const TwoLayerTyre& tyre, doubl
     subtract[static_cast<std::size_t>(j)] =
         1.0 / ((cd(0.0, 1.0) * w + a) * std::sqrt(tread.density * tread.stiffness.c11 * tread_modulus.factor(w)));
   }
+  // Batches of modes, each taken by the next free thread with its own transform buffers (plans
+  // are made under FFTW's planner lock): a mode's values do not depend on who computed them or
+  // on the other modes of its batch, so the result is the same with any number of threads.
   const int batch = std::min(batch_size, count);
-  RealFftBatch fft(samples_, batch);
-  for (int start = 0; start < count; start += batch) {
-    const int used = std::min(batch, count - start);
-    for (int b = 0; b < batch; ++b) {
-      for (int j = 0; j <= samples_ / 2; ++j) fft.bin(b, j) = 0.0;
-      if (b >= used) continue;
-      const int index = start + b;
-      const int m = index % columns, n = first + index / columns;
-      const double kx = tyre.wavenumber_x(m), ky = tyre.wavenumber_y(n);
-      for (int j = 0; j < fine; ++j) {
-        const std::size_t i = static_cast<std::size_t>(j);
-        const cd remainder = tyre.wavenumber_compliance(kx, ky, omega[i])(2, 2) - subtract[i];
-        s.fold(j, remainder * filter[i], [&](int bin) -> cd& { return fft.bin(b, bin); });
+  const int batches = (count + batch - 1) / batch;
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const int workers = std::min(batches, static_cast<int>(threads == 0 ? hardware : threads));
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> failures(static_cast<std::size_t>(workers));
+  const auto work = [&](int worker) {
+    try {
+      RealFftBatch fft(samples_, batch);
+      for (int taken = next++; taken < batches; taken = next++) {
+        const int start = taken * batch;
+        const int used = std::min(batch, count - start);
+        for (int b = 0; b < batch; ++b) {
+          for (int j = 0; j <= samples_ / 2; ++j) fft.bin(b, j) = 0.0;
+          if (b >= used) continue;
+          const int index = start + b;
+          const int m = index % columns, n = first + index / columns;
+          const double kx = tyre.wavenumber_x(m), ky = tyre.wavenumber_y(n);
+          for (int j = 0; j < fine; ++j) {
+            const std::size_t i = static_cast<std::size_t>(j);
+            const cd remainder = tyre.wavenumber_compliance(kx, ky, omega[i])(2, 2) - subtract[i];
+            s.fold(j, remainder * filter[i], [&](int bin) -> cd& { return fft.bin(b, bin); });
+          }
+        }
+        fft.backward();
+        for (int b = 0; b < used; ++b) {
+          std::vector<double>& out = modes_[static_cast<std::size_t>(start + b)];
+          const double* field = fft.field() + static_cast<std::size_t>(b) * samples_;
+          for (int k = 0; k < samples_; ++k) {
+            out[static_cast<std::size_t>(k)] = s.centred(field, k) + asymptote[static_cast<std::size_t>(k)];
+          }
+        }
       }
+    } catch (...) {
+      failures[static_cast<std::size_t>(worker)] = std::current_exception();
+      next = batches;  // the others stop too
     }
-    fft.backward();
-    for (int b = 0; b < used; ++b) {
-      std::vector<double>& out = modes_[static_cast<std::size_t>(start + b)];
-      const double* field = fft.field() + static_cast<std::size_t>(b) * samples_;
-      for (int k = 0; k < samples_; ++k) {
-        out[static_cast<std::size_t>(k)] = s.centred(field, k) + asymptote[static_cast<std::size_t>(k)];
-      }
-    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+  }  // joined here
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
   }
 }
 

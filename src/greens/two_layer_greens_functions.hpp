@@ -46,8 +46,10 @@ namespace rollnoise {
 
 class TwoLayerGreensFunctions {
  public:
-  // Δt > 0, K even and ≥ 4, oversampling ≥ 1.
-  TwoLayerGreensFunctions(const TwoLayerTyre& tyre, double time_step, int samples, int oversampling = 4);
+  // Δt > 0, K even and ≥ 4, oversampling ≥ 1. The modes are computed on `threads` threads (0: one
+  // per core); the values do not depend on the number.
+  TwoLayerGreensFunctions(const TwoLayerTyre& tyre, double time_step, int samples, int oversampling = 4,
+                          unsigned threads = 0);
 
   double time_step() const noexcept { return dt_; }
   int samples() const noexcept { return samples_; }

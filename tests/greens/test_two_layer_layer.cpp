@@ -193,6 +193,29 @@ TEST(TanhSqrt, TwoRootFormForAMinimalPolynomialOfDegreeTwo) {
   }
 }
 
+// layer_stiffness computes B·f(CB) as f(BC)·B: the two agree for any 3×3 B and C (f(M) is a
+// polynomial in M, and B(CB)^j = (BC)^j B), a singular B included.
+TEST(TanhSqrt, MatrixFunctionIntertwinesProducts) {
+  Eigen::Matrix3cd b, c;
+  b << cd(0.0, -0.3), 1.0, 0.0,  //
+      cd(0.0, -0.2), 0.0, 1.7,  //
+      cd(-0.8, 0.05), cd(0.0, -0.3), cd(0.0, -0.2);
+  c << cd(0.0, -0.1), cd(0.0, -0.07), 0.02,  //
+      cd(25.0, 1.0), 3.0, cd(0.0, -0.1),  //
+      3.0, cd(9.0, 0.4), cd(0.0, -0.07);
+  for (const double scale : {1e-3, 0.1, 1.0, 30.0}) {
+    const Eigen::Matrix3cd bs = scale * b;
+    const Eigen::Matrix3cd left = bs * tanh_sqrt(Eigen::Matrix3cd(c * bs));
+    const Eigen::Matrix3cd right = tanh_sqrt(Eigen::Matrix3cd(bs * c)) * bs;
+    EXPECT_LT((left - right).norm() / right.norm(), 1e-12) << scale;
+  }
+  Eigen::Matrix3cd singular = b;
+  singular.col(2) = 2.0 * singular.col(0);
+  const Eigen::Matrix3cd left = singular * tanh_sqrt(Eigen::Matrix3cd(c * singular));
+  const Eigen::Matrix3cd right = tanh_sqrt(Eigen::Matrix3cd(singular * c)) * singular;
+  EXPECT_LT((left - right).norm() / right.norm(), 1e-12);
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. The causal modulus.
 

@@ -470,6 +470,16 @@ TEST(TwoLayerTyre, StepKernelConvergesAndSumsToTheStaticCompliance) {
   EXPECT_NEAR(integral / static_receptance, 1.0, 2e-3);
 }
 
+// The modes are shared out to threads batch by batch: any thread count gives the same values,
+// bit for bit (several batches of 64 modes, the last one partly filled).
+TEST(TwoLayerTyre, GreensFunctionsDoNotDependOnTheThreadCount) {
+  const TwoLayerTyre tyre(test::tyre_like_two_layer(40, 4));  // 41 × 4 = 164 modes: 3 batches
+  const TwoLayerGreensFunctions one(tyre, 4e-4, 64, 4, 1), three(tyre, 4e-4, 64, 4, 3);
+  for (int n = tyre.first_lateral_order(); n <= tyre.last_lateral_order(); ++n) {
+    for (int m = 0; m <= 40; ++m) EXPECT_EQ(one.mode(m, n), three.mode(m, n)) << "m = " << m << ", n = " << n;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 6. The static case and the side conditions.
 
