@@ -1,5 +1,6 @@
 #include "response/surface_response.hpp"
 
+#include <numbers>
 #include <stdexcept>
 
 #include "contact/modal_history_engine.hpp"
@@ -17,6 +18,9 @@ SurfaceResponse::SurfaceResponse(const RollingModes& modes, const Eigen::VectorX
     for (int l = 0; l < modes.lateral_modes(); ++l) shapes_(j, l) = modes.tyre().lateral_shape(l, y);
   }
   around_.resize(modes.lateral_modes(), modes.grid().circumferential);
+  const int big_n = modes.grid().circumferential;
+  twiddle_.resize(static_cast<std::size_t>(big_n));
+  for (int k = 0; k < big_n; ++k) twiddle_[static_cast<std::size_t>(k)] = std::polar(1.0, 2.0 * std::numbers::pi * k / big_n);
 }
 
 SurfaceResponse::~SurfaceResponse() = default;
@@ -73,6 +77,26 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
     Eigen::MatrixXd& out = component == 0 ? *displacement : velocity;
     out.noalias() = shapes_ * around_;
   }
+}
+
+double SurfaceResponse::displacement_at(int j, int g) const {
+  const int big_n = modes_.grid().circumferential;
+  if (j < 0 || j >= shapes_.rows() || g < 0 || g >= big_n) throw std::out_of_range("surface response: no such point");
+  // FFTW's c2r at g: X_0 + 2·Σ Re(X_m·e^{2πimg/N}) (0 < m < N/2) + X_{N/2}·(−1)^g, real parts,
+  // with step()'s bins (the Nyquist bin doubled there, as here).
+  double u = 0.0;
+  for (int l = 0; l < modes_.lateral_modes(); ++l) {
+    double around = 0.0;
+    for (int m = 0; m <= std::min(modes_.orders(), big_n / 2); ++m) {
+      const auto r = static_cast<std::size_t>(modes_.mode_index(m, l));
+      const std::complex<double> value = engine_->amplitude(r) + (out_of_round_.empty() ? 0.0 : out_of_round_[r]);
+      if (m == 0) around += value.real();
+      else if (2 * m == big_n) around += (g % 2 == 0 ? 2.0 : -2.0) * value.real();
+      else around += 2.0 * (value * twiddle_[static_cast<std::size_t>((static_cast<long>(m) * g) % big_n)]).real();
+    }
+    u += shapes_(j, l) * around;
+  }
+  return u;
 }
 
 }  // namespace rollnoise

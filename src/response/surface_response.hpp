@@ -56,6 +56,12 @@ class SurfaceResponse {
   // "all" fields (issue 12). The velocity is the same bit for bit either way.
   void step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd* displacement, Eigen::MatrixXd& velocity);
 
+  // The displacement (m) at row j, position g around, after the last step: the sum step()'s
+  // transform makes there, taken directly (L·M terms instead of the whole field), equal to
+  // step()'s field to round-off. The revolution of Fig. 5b needs one point a step; the whole
+  // field, a second transform and product, had doubled the response's work on those steps.
+  double displacement_at(int j, int g) const;
+
   double lateral_position(int j) const;
 
  private:
@@ -68,6 +74,7 @@ class SurfaceResponse {
   // advanced by e^{iω_m Δt} each step; empty when there is none.
   std::vector<std::complex<double>> out_of_round_;
   std::vector<std::complex<double>> out_of_round_step_;
+  std::vector<std::complex<double>> twiddle_;  // e^{2πik/Nθ}, k < Nθ: the backward transform's factors
 };
 
 }  // namespace rollnoise

@@ -286,7 +286,7 @@ void TyreStepOutputs::respond_waiting_steps() {
         if (stop) break;
       }
       Slot& slot = slots[n % ring];
-      evaluate(patch_forces_.col(static_cast<Eigen::Index>(n)), slot.u, slot.v, needs_displacement(n));
+      evaluate(n, patch_forces_.col(static_cast<Eigen::Index>(n)), slot.u, slot.v);
       const std::lock_guard lock(mutex);
       evaluated = n + 1;
       changed.notify_all();
@@ -299,29 +299,33 @@ void TyreStepOutputs::respond_waiting_steps() {
 }
 
 void TyreStepOutputs::respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force) {
-  evaluate(force, u_, v_, needs_displacement(index));
+  evaluate(index, force, u_, v_);
   use(index, force, u_, v_);
 }
 
 // Material that starts at the top (g = Nθ/2) moves one cell towards −x every p steps: the
-// revolution (Fig. 5b) takes one displacement of each of the first Nθ cells' steps. Otherwise
-// only contact.h5's "all" fields need the displacement; the velocity is evaluated alone.
-bool TyreStepOutputs::needs_displacement(std::size_t index) const {
+// revolution (Fig. 5b) takes one displacement of each of the first Nθ cells' steps, at the cell
+// it returns (or −1 on other steps).
+int TyreStepOutputs::revolution_cell(std::size_t index) const {
   const auto substeps = static_cast<std::size_t>(modes_.substeps());
-  const bool on_revolution =
-      index % substeps == 0 && index / substeps < static_cast<std::size_t>(modes_.grid().circumferential);
-  return on_revolution || surface_displacement_ != nullptr;
+  const int around = modes_.grid().circumferential;
+  if (index % substeps != 0 || index / substeps >= static_cast<std::size_t>(around)) return -1;
+  return ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;
 }
 
-void TyreStepOutputs::evaluate(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u, Eigen::MatrixXd& v,
-                               bool displacement) {
-  response_->step(force, displacement ? &u : nullptr, v);
+// Only contact.h5's "all" fields need the whole displacement; the revolution takes its one
+// point directly, and the velocity is evaluated alone.
+void TyreStepOutputs::evaluate(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u,
+                               Eigen::MatrixXd& v) {
+  const bool field = surface_displacement_ != nullptr;
+  response_->step(force, field ? &u : nullptr, v);
+  const int mid = modes_.grid().lateral / 2;
+  if (const int g = revolution_cell(index); g >= 0 && !field) u(mid, g) = response_->displacement_at(mid, g);
 }
 
 void TyreStepOutputs::use(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, const Eigen::MatrixXd& u,
                           const Eigen::MatrixXd& v) {
   const TyreGrid& grid = modes_.grid();
-  const auto substeps = static_cast<std::size_t>(modes_.substeps());
   const int around = grid.circumferential, across = grid.lateral;
   if (settings_.belt_psd) settings_.belt_psd->push(std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
   if (settings_.tread_sampling) {
@@ -340,10 +344,7 @@ void TyreStepOutputs::use(std::size_t index, const Eigen::Ref<const Eigen::Vecto
       tread_velocity_.row(static_cast<Eigen::Index>(index)) = (sampling_ * radiating_).transpose();
     }
   }
-  if (index % substeps == 0 && index / substeps < static_cast<std::size_t>(around)) {
-    const int g = ((around / 2 - static_cast<int>(index / substeps)) % around + around) % around;
-    revolution_.push_back(u(across / 2, g));
-  }
+  if (const int g = revolution_cell(index); g >= 0) revolution_.push_back(u(across / 2, g));
   if (!h5_) return;
   writing([&] {
     // The belt fields are Ny × Nθ column-major: written row by row ([y][around]).

@@ -116,8 +116,8 @@ class TyreStepOutputs final : public ContactStepSink {
   void respond(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force);
   // respond() in two halves: the belt's fields of the step (the response's recursion), and
   // what is taken from them (the spectra, the radiating velocity, the revolution, contact.h5).
-  bool needs_displacement(std::size_t index) const;
-  void evaluate(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u, Eigen::MatrixXd& v, bool displacement);
+  int revolution_cell(std::size_t index) const;
+  void evaluate(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, Eigen::MatrixXd& u, Eigen::MatrixXd& v);
   void use(std::size_t index, const Eigen::Ref<const Eigen::VectorXd>& force, const Eigen::MatrixXd& u,
            const Eigen::MatrixXd& v);
   // The waiting steps 0 … n − 1 (forces in patch_forces_), the two halves on two threads.

@@ -2,6 +2,7 @@
 // over the whole circumference (its own modal recursion, all Nθ positions by FFT) must equal,
 // at the contact window, what the contact solver computed through its history engine and G[0].
 #include <cmath>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -181,6 +182,32 @@ TEST(SurfaceResponse, VelocityIsTheRateOfTheDisplacementAtFixedPositions) {
   EXPECT_GT(coarse.surface / fine.surface, 3.0);  // second order: 4
   // The material velocity differs by V·∂u/∂x, larger than v itself near the patch.
   EXPECT_GT(fine.material, 0.5);
+}
+
+TEST(SurfaceResponse, DisplacementAtOnePointIsTheFieldsToRoundOff) {
+  // displacement_at sums the modes at one point directly; step() transforms them to the whole
+  // field by FFT. Every point of every step, rolling on texture with an out-of-roundness (the
+  // Nyquist order included: 2·M ≥ Nθ here), within round-off of the field's largest value.
+  const TyreGrid grid = test_grid(128, 6);
+  const KroppPlate plate(test_plate(64));
+  const double speed = 20.0;
+  const RollingModes rolling(plate, grid, grid.dx() / speed);
+  ASSERT_GE(2 * rolling.orders(), grid.circumferential);
+  const Eigen::MatrixXd local = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 5e8);
+  const TyreContactTrace t = simulate_rolling_tyre(rolling, local, Texture(), {speed, 20 * grid.dx() / speed, 3000.0, HistoryKind::modal});
+  SurfaceResponse response(rolling, t.steady_force, grid.lateral);
+  response.add_out_of_roundness(3, 1, 1e-4, 0.3);
+  response.add_out_of_roundness(grid.circumferential / 2, 0, 2e-5, 1.1);
+  Eigen::MatrixXd u(grid.lateral, grid.circumferential), v(grid.lateral, grid.circumferential);
+  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
+    response.step(t.force.row(n).transpose(), u, v);
+    const double scale = u.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    for (int j = 0; j < grid.lateral; ++j)
+      for (int g = 0; g < grid.circumferential; ++g)
+        ASSERT_NEAR(response.displacement_at(j, g), u(j, g), 1e-12 * scale) << "step " << n << " at " << j << ", " << g;
+  }
+  EXPECT_THROW(static_cast<void>(response.displacement_at(grid.lateral, 0)), std::out_of_range);
 }
 
 TEST(SurfaceResponse, OutOfRoundnessRadiatesAtTheRotationHarmonic) {
