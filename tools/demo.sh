@@ -28,7 +28,7 @@ for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
 # The seed's two-layer tyre (issue 11) on the smooth road: the first run tabulates its modes and
-# fits poles to them (about a minute; cached for the next runs).
+# fits poles to them (about 16 s on 2 cores; cached for the next runs).
 build/tools/rollnoise/rollnoise simulate models/cases/two_layer_smooth_80kmh.toml --out "$out/two_layer_smooth_80kmh"
 
 # Road surfaces (issue 9): the dense asphalt the rough case rolls on, and a measured chip-seal
