@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 
 #include "contact/direct_history_engine.hpp"
+#include "contact/illinois_bracket.hpp"
 #include "contact/modal_history_engine.hpp"
 #include "contact/nonlinear_tread_contact.hpp"
 #include "contact/pmatrix_lcp.hpp"
@@ -152,27 +153,18 @@ StaticContact steady_nonlinear_contact(Contact& contact, const Eigen::VectorXd& 
     if (hi - touch > 1.0) throw std::runtime_error("steady rolling: no indentation below 1 m carries the load");
     f_hi = excess(hi);
   }
-  int side = 0;
-  for (int iteration = 0; iteration < 200 && std::abs(hi - lo) > 1e-15 * std::abs(hi); ++iteration) {
-    const double d = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+  IllinoisBracket bracket{lo, f_lo, hi, f_hi};
+  for (int iteration = 0; iteration < 200 && std::abs(bracket.hi - bracket.lo) > 1e-15 * std::abs(bracket.hi);
+       ++iteration) {
+    const double d = bracket.regula_falsi();
     const double f = excess(d);
     if (std::abs(f) <= 1e-12 * load) {
-      lo = hi = d;
+      bracket.lo = bracket.hi = d;
       break;
     }
-    if (f < 0.0) {
-      lo = d;
-      f_lo = f;
-      if (side == -1) f_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = d;
-      f_hi = f;
-      if (side == 1) f_lo *= 0.5;
-      side = 1;
-    }
+    bracket.narrow(d, f);
   }
-  const double d = 0.5 * (lo + hi);
+  const double d = 0.5 * (bracket.lo + bracket.hi);
   excess(d);
   compression = contact.compression();
   return StaticContact{d, contact.force()};

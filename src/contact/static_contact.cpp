@@ -6,6 +6,7 @@
 #include <vector>
 
 
+#include "contact/illinois_bracket.hpp"
 #include "contact/pmatrix_lcp.hpp"
 
 namespace rollnoise {
@@ -43,38 +44,27 @@ StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
   }
   // ΣF(d) is piecewise linear and increasing, linear on each contact set: two trials on the same
   // set give the exact root of that piece by their secant (Newton's step with the slope
-  // 1ᵀ·C_AA⁻¹·1, without a factorisation of its own). Otherwise regula falsi on the bracket,
-  // with the Illinois halving so that an end that stays does not stall it.
+  // 1ᵀ·C_AA⁻¹·1, without a factorisation of its own). Otherwise regula falsi on the bracket.
+  IllinoisBracket bracket{lo, f_lo, hi, f_hi};
   double d = hi, f = f_hi;
   std::vector<char> last_set = lcp.result().basic;
   double last_d = hi, last_f = f_hi;
   bool have_last = false;
-  int side = 0;
   for (int iteration = 0; iteration < 200 && std::abs(f) > 1e-14 * load; ++iteration) {
-    double next = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    double next = bracket.regula_falsi();
     if (have_last && lcp.result().basic == last_set && d != last_d) {
       const double secant = d - f * (d - last_d) / (f - last_f);
-      if (secant >= lo && secant <= hi) next = secant;
+      if (secant >= bracket.lo && secant <= bracket.hi) next = secant;
     }
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (next == d || hi - lo <= 1e-15 * std::abs(hi)) break;
+    if (!(next > bracket.lo && next < bracket.hi)) next = 0.5 * (bracket.lo + bracket.hi);
+    if (next == d || bracket.hi - bracket.lo <= 1e-15 * std::abs(bracket.hi)) break;
     last_set = lcp.result().basic;
     last_d = d;
     last_f = f;
     have_last = true;
     d = next;
     f = excess(d);
-    if (f < 0.0) {
-      lo = d;
-      f_lo = f;
-      if (side == -1) f_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = d;
-      f_hi = f;
-      if (side == 1) f_lo *= 0.5;
-      side = 1;
-    }
+    bracket.narrow(d, f);
   }
   result.indentation = d;
   result.force = lcp.result().z;
