@@ -62,9 +62,8 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
           const auto r = static_cast<std::size_t>(modes_.mode_index(m, l));
           // The out-of-roundness is a shape fixed in the material: it passes a fixed point at
           // ω_m and has no rate of its own.
-          const std::complex<double> fixed = out_of_round_.empty() ? 0.0 : out_of_round_[r];
-          value = component == 0 ? engine_->amplitude(r) + fixed
-                                 : engine_->rate(r) + std::complex<double>(0.0, modes_.passing_rate(m)) * fixed;
+          value = component == 0 ? displacement_bin(r)
+                                 : engine_->rate(r) + std::complex<double>(0.0, modes_.passing_rate(m)) * out_of_round(r);
         }
         // c2r weighs the Nyquist bin once; the modes ±Nθ/2 both alias to it.
         if (m == big_n / 2) value *= 2.0;
@@ -79,6 +78,12 @@ void SurfaceResponse::step(const Eigen::Ref<const Eigen::VectorXd>& force, Eigen
   }
 }
 
+std::complex<double> SurfaceResponse::out_of_round(std::size_t r) const {
+  return out_of_round_.empty() ? 0.0 : out_of_round_[r];
+}
+
+std::complex<double> SurfaceResponse::displacement_bin(std::size_t r) const { return engine_->amplitude(r) + out_of_round(r); }
+
 double SurfaceResponse::displacement_at(int j, int g) const {
   const int big_n = modes_.grid().circumferential;
   if (j < 0 || j >= shapes_.rows() || g < 0 || g >= big_n) throw std::out_of_range("surface response: no such point");
@@ -89,7 +94,7 @@ double SurfaceResponse::displacement_at(int j, int g) const {
     double around = 0.0;
     for (int m = 0; m <= std::min(modes_.orders(), big_n / 2); ++m) {
       const auto r = static_cast<std::size_t>(modes_.mode_index(m, l));
-      const std::complex<double> value = engine_->amplitude(r) + (out_of_round_.empty() ? 0.0 : out_of_round_[r]);
+      const std::complex<double> value = displacement_bin(r);
       if (m == 0) around += value.real();
       else if (2 * m == big_n) around += (g % 2 == 0 ? 2.0 : -2.0) * value.real();
       else around += 2.0 * (value * twiddle_[static_cast<std::size_t>((static_cast<long>(m) * g) % big_n)]).real();

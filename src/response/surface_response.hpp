@@ -65,6 +65,10 @@ class SurfaceResponse {
   double lateral_position(int j) const;
 
  private:
+  // Mode r's out-of-roundness (0 without one), and its displacement in the fixed frame: the bin
+  // both step()'s transform and displacement_at() sum.
+  std::complex<double> out_of_round(std::size_t r) const;
+  std::complex<double> displacement_bin(std::size_t r) const;
   const RollingModes& modes_;
   std::unique_ptr<ModalHistoryEngine> engine_;
   std::unique_ptr<RealFftBatch> fft_;
