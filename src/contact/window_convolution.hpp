@@ -40,6 +40,9 @@ class WindowConvolution {
   int lateral() const noexcept { return lateral_; }
   // Whether the even/odd reduction of a laterally symmetric G is used.
   bool lateral_symmetry() const noexcept { return folded_; }
+  // Whether the spectra's multiply-adds take four bins at a time (AVX, where the processor has
+  // it: the default) or two (SSE2); both give the same bits. Returns whether AVX is now used.
+  bool use_avx(bool on) noexcept;
 
  private:
   struct FftwFree {
@@ -52,6 +55,7 @@ class WindowConvolution {
 
   int window_, lateral_, length_, bins_, stride_;
   bool folded_ = false;  // rows as even/odd combinations
+  bool avx_ = false;     // the multiply-adds four bins at a time (same bits as two at a time)
   int even_ = 0;         // rows in the even block (the odd block follows: lateral_ − even_)
   Buffer field_, spectrum_;                    // L rows of N values / of N/2 + 1 interleaved bins
   Buffer in_re_, in_im_, out_re_, out_im_;     // the spectra split, `stride_` bins a row

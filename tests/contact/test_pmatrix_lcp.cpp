@@ -255,6 +255,26 @@ TEST(WindowConvolution, EqualsTheDenseProductOfATranslationInvariantMatrix) {
   }
 }
 
+TEST(WindowConvolution, FourBinsARegisterGiveTheSameBitsAsTwo) {
+  // The AVX multiply-adds (where the processor has them) against SSE2's, folded (L > 1) and whole.
+  for (const Window w : {Window{40, 6}, Window{52, 20}, Window{7, 1}}) {
+    const Eigen::MatrixXd m = rolling_matrix(w);
+    WindowConvolution wide(m, w.length, w.lateral), narrow(m, w.length, w.lateral);
+    if (!wide.use_avx(true)) GTEST_SKIP() << "this processor has no AVX: only the SSE2 products run";
+    EXPECT_FALSE(narrow.use_avx(false));
+    expect_dense_product(narrow, m, 29, "SSE2, " + std::to_string(w.length) + " x " + std::to_string(w.lateral));
+    std::mt19937_64 rng(31);
+    Eigen::VectorXd y_wide, y_narrow;
+    for (int trial = 0; trial < 3; ++trial) {
+      const Eigen::VectorXd z = random_vector(m.rows(), rng);
+      wide.apply(z, y_wide);
+      narrow.apply(z, y_narrow);
+      EXPECT_TRUE(y_wide == y_narrow) << w.length << " x " << w.lateral << ": max difference "
+                                      << (y_wide - y_narrow).cwiseAbs().maxCoeff();
+    }
+  }
+}
+
 TEST(WindowConvolution, FoldsALaterallySymmetricMatrixIntoEvenAndOddRowsAndLeavesOthersWhole) {
   // Rows that couple by more than their distance (a tyre stiffer at its shoulders), with the lag
   // along x: symmetric about the centre line, or (with the tilt) not.
