@@ -72,9 +72,13 @@ class PMatrixLcpSolver {
   // Whether the conjugate gradients of a pivoting iteration may stop as soon as the iteration's
   // exchange is decided (the default; it is the same exchange), the last one's once all signs
   // are decided feasible and the residual is 1e-11 of max |q|, and the next iteration start
-  // from the last M·z; off, each block is solved afresh to 1e-13 (the solver as it was, kept as
-  // the tests' reference).
+  // from the last M·z; off, each block is solved afresh to 1e-13 from the warm set as it is (the
+  // solver as it was, kept as the tests' reference, without correct_warm_start either).
   void decide_early(bool on) noexcept { decide_early_ = on; }
+  // Whether the warm start's set is corrected by the warm forces' gaps before the first solve
+  // (the default, with decide_early and conjugate gradients): a point off it that penetrates
+  // under them enters, one on it whose force a Jacobi step makes negative leaves.
+  void correct_warm_start(bool on) noexcept { correct_start_ = on; }
   // Whether basic blocks are solved by conjugate gradients; their iterations so far.
   bool iterative() const noexcept { return iterative_; }
   long cg_iterations() const noexcept { return cg_iterations_; }
@@ -91,6 +95,8 @@ class PMatrixLcpSolver {
   // Whether every sign test is decided with z's error on A at most z_error and w's (from mz_)
   // off A at most w_error, and if so whether some index is infeasible.
   enum class Signs { undecided, infeasible, feasible };
+  // The warm start's basic set, corrected by the gaps and forces of z = last_z_.
+  void correct_start(const Eigen::VectorXd& q);
   Signs decide_signs(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
                      double w_error, double tolerance) const;
 
@@ -99,6 +105,7 @@ class PMatrixLcpSolver {
   std::unique_ptr<WindowConvolution> product_;
   bool iterative_ = false;
   bool decide_early_ = true;
+  bool correct_start_ = true;
   long cg_iterations_ = 0;
   PMatrixLcpResult result_;
   std::vector<char> shifted_;

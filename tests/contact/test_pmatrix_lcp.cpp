@@ -357,6 +357,7 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
   const std::vector<Eigen::Index> shift = shift_back(w);
   PMatrixLcpSolver early(m, 48, ContactWindow{w.length, w.lateral});
   PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
+  early.correct_warm_start(false);  // the same first set as the exact solves'
   exact.decide_early(false);
   ASSERT_TRUE(early.iterative());
   std::mt19937_64 rng(6);
@@ -389,6 +390,47 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
   }
   EXPECT_GT(pivots, 100) << "the road should force exchanges at most steps";
   EXPECT_LT(early.cg_iterations(), exact.cg_iterations()) << "no exchange was decided early";
+}
+
+TEST(PMatrixLcp, AWarmStartCorrectedByItsGapsReachesTheSameSolutionInFewerPivots) {
+  // The same plate-like window and rough road: the last step's set corrected by the warm forces'
+  // gaps before the first solve must end at the exact solver's set and solution (the dense
+  // reference's), in fewer pivoting iterations.
+  const Window w{48, 8};
+  const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
+    return (dx == 0 && dy == 0 ? 1.0 : 0.0) + 0.004 * std::exp(-std::sqrt(dx * dx + 4.0 * dy * dy) / 5.0);
+  });
+  const std::vector<Eigen::Index> shift = shift_back(w);
+  PMatrixLcpSolver corrected(m, 48, ContactWindow{w.length, w.lateral});
+  PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
+  exact.decide_early(false);
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> normal;
+  std::vector<double> road(500);
+  for (double& r : road) r = 0.3 * normal(rng);
+  long pivots_corrected = 0, pivots_exact = 0;
+  for (int step = 0; step < 150; ++step) {
+    Eigen::VectorXd q(w.points());
+    for (int j = 0; j < w.lateral; ++j)
+      for (int i = 0; i < w.length; ++i) {
+        const double x = i - 0.5 * w.length;
+        q(w.index(i, j)) = 0.004 * x * x - 1.0 - road[static_cast<std::size_t>(i + step + 37 * j) % road.size()];
+      }
+    if (step > 0) {
+      corrected.relabel(shift, true);
+      exact.relabel(shift, true);
+    }
+    const PMatrixLcpResult& a = corrected.solve(q);
+    const PMatrixLcpResult& b = exact.solve(q);
+    const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
+    ASSERT_EQ(a.basic, reference.basic) << "step " << step;
+    ASSERT_LE(kkt_violation(m, q, a.z), 2e-11) << "step " << step;
+    ASSERT_LE((a.z - reference.z).cwiseAbs().maxCoeff(), 1e-10 * reference.z.cwiseAbs().maxCoeff()) << "step " << step;
+    pivots_corrected += a.iterations;
+    pivots_exact += b.iterations;
+  }
+  EXPECT_GT(pivots_exact, 100) << "the road should force exchanges at most steps";
+  EXPECT_LT(pivots_corrected, pivots_exact);
 }
 
 }  // namespace
