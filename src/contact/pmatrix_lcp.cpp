@@ -249,13 +249,14 @@ PMatrixLcpSolver::Cg PMatrixLcpSolver::conjugate_gradients(const std::vector<cha
   const Eigen::Index n = q.size();
   // M·z of the last pivoting iteration's z, carried along: z loses the indices that left the
   // block (those that enter had z = 0), whose columns of M are taken off when they are fewer
-  // than a product's cost (a column is n multiply-adds, a product a few dozen n).
+  // than a product's cost (a column is n multiply-adds from the kernel along x, which stays in
+  // cache; a product a few dozen n).
   Eigen::Index leaving = 0;
   if (mz_valid_ && decide_early_)
     for (Eigen::Index i = 0; i < n; ++i) leaving += !basic[static_cast<std::size_t>(i)] && z(i) != 0.0;
   if (mz_valid_ && decide_early_ && leaving <= kLeavingColumns) {
     for (Eigen::Index i = 0; i < n; ++i)
-      if (!basic[static_cast<std::size_t>(i)] && z(i) != 0.0) mz_.noalias() -= z(i) * m_->col(i);
+      if (!basic[static_cast<std::size_t>(i)] && z(i) != 0.0) product_->subtract_column(i, z(i), mz_);
   }
   for (Eigen::Index i = 0; i < n; ++i) mask_(i) = basic[static_cast<std::size_t>(i)] ? 1.0 : 0.0;
   z.array() *= mask_.array();
@@ -327,9 +328,11 @@ PMatrixLcpSolver::Signs PMatrixLcpSolver::decide_signs(const std::vector<char>& 
                                                        const Eigen::VectorXd& z, double z_error, double w_error,
                                                        double tolerance) const {
   bool infeasible = false;
+  const char* on = basic.data();
+  const double *zi = z.data(), *mzi = mz_.data(), *qi = q.data();
   for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const bool on_block = basic[static_cast<std::size_t>(i)] != 0;
-    const double value = on_block ? z(i) : mz_(i) + q(i);
+    const bool on_block = on[i] != 0;
+    const double value = on_block ? zi[i] : mzi[i] + qi[i];
     const double error = on_block ? z_error : w_error;
     if (value - error >= -tolerance) continue;    // feasible, whatever the error
     if (value + error < -tolerance) {             // infeasible, whatever the error

@@ -89,12 +89,17 @@ WindowConvolution::WindowConvolution(const Eigen::MatrixXd& g, int window, int l
     return spectrum[(static_cast<std::size_t>(jp) * lateral + jq) * bins_ + k];
   };
   RealFftBatch column(length_, 1);
+  const auto lags = static_cast<std::size_t>(2 * window - 1);
+  lags_.resize(static_cast<std::size_t>(lateral) * lateral * lags);
   for (int jp = 0; jp < lateral; ++jp)
     for (int jq = 0; jq < lateral; ++jq) {
       // c[d mod N] = g(d) for d = i_p − i_q from −(W − 1) to W − 1; zero between.
       for (int k = 0; k < length_; ++k) column.at(0, k) = 0.0;
       for (int d = 0; d < window; ++d) column.at(0, d) = g(index(d, jp), index(0, jq));
       for (int d = 1; d < window; ++d) column.at(0, length_ - d) = g(index(0, jp), index(d, jq));
+      double* lag = lags_.data() + (static_cast<std::size_t>(jq) * lateral + jp) * lags + (window - 1);
+      for (int d = 0; d < window; ++d) lag[d] = column.at(0, d);
+      for (int d = 1; d < window; ++d) lag[-d] = column.at(0, length_ - d);
       column.forward();
       for (int k = 0; k < bins_; ++k) at(jp, jq, k) = column.bin(0, k) / static_cast<double>(length_);
     }
@@ -217,6 +222,20 @@ void WindowConvolution::multiply_block(int offset, int size, const double* kerne
       }
 #endif
     }
+  }
+}
+
+void WindowConvolution::subtract_column(Eigen::Index point, double factor, Eigen::VectorXd& y) const {
+  const Eigen::Index points = Eigen::Index{window_} * lateral_;
+  if (point < 0 || point >= points || y.size() != points) throw std::invalid_argument("window convolution: no such column");
+  const auto iq = static_cast<int>(point % window_);
+  const auto jq = static_cast<int>(point / window_);
+  const auto lags = static_cast<std::size_t>(2 * window_ - 1);
+  for (int jp = 0; jp < lateral_; ++jp) {
+    // G(i_p + W·j_p, point) = lag i_p − i_q of the pair (j_p, j_q), for i_p = 0 … W − 1.
+    const double* column = lags_.data() + (static_cast<std::size_t>(jq) * lateral_ + jp) * lags + (window_ - 1 - iq);
+    double* out = y.data() + Eigen::Index{window_} * jp;
+    for (int ip = 0; ip < window_; ++ip) out[ip] -= factor * column[ip];
   }
 }
 

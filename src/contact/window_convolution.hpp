@@ -35,6 +35,9 @@ class WindowConvolution {
 
   // y = G·z (z, y of W·L values; may not alias).
   void apply(const Eigen::VectorXd& z, Eigen::VectorXd& y);
+  // y −= factor·G(:, point): one column, from the kernel along x (L²·(2W − 1) values, which stay
+  // in cache where the dense G does not: 8.6 MB on the plate's 1040 points).
+  void subtract_column(Eigen::Index point, double factor, Eigen::VectorXd& y) const;
 
   int window() const noexcept { return window_; }
   int lateral() const noexcept { return lateral_; }
@@ -60,6 +63,7 @@ class WindowConvolution {
   Buffer field_, spectrum_;                    // L rows of N values / of N/2 + 1 interleaved bins
   Buffer in_re_, in_im_, out_re_, out_im_;     // the spectra split, `stride_` bins a row
   Buffer kernel_re_, kernel_im_;               // per block, row-major (j_p, j_q), `stride_` bins each, divided by N
+  std::vector<double> lags_;                   // G(i_p − i_q = d, j_p, j_q) at (j_q·L + j_p)·(2W − 1) + d + W − 1
   std::size_t odd_kernel_ = 0;                 // where the odd block's kernel starts
   std::unique_ptr<FftwPlan> forward_, backward_;
 };

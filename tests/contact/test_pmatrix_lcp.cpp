@@ -255,6 +255,24 @@ TEST(WindowConvolution, EqualsTheDenseProductOfATranslationInvariantMatrix) {
   }
 }
 
+TEST(WindowConvolution, SubtractsAColumnOfTheDenseMatrixFromItsKernel) {
+  // Every column of a translation-invariant matrix, lags of both signs, against the dense one.
+  for (const Window w : {Window{12, 3}, Window{5, 1}}) {
+    const Eigen::MatrixXd m = rolling_matrix(w);
+    const WindowConvolution product(m, w.length, w.lateral);
+    std::mt19937_64 rng(37);
+    const Eigen::VectorXd start = random_vector(m.rows(), rng);
+    for (Eigen::Index point = 0; point < m.cols(); ++point) {
+      Eigen::VectorXd y = start;
+      product.subtract_column(point, 0.75, y);
+      const Eigen::VectorXd expected = start - 0.75 * m.col(point);
+      EXPECT_LE((y - expected).cwiseAbs().maxCoeff(), 1e-15 * expected.cwiseAbs().maxCoeff()) << "column " << point;
+    }
+    Eigen::VectorXd y = start;
+    EXPECT_THROW(product.subtract_column(m.cols(), 1.0, y), std::invalid_argument);
+  }
+}
+
 TEST(WindowConvolution, FourBinsARegisterGiveTheSameBitsAsTwo) {
   // The AVX multiply-adds (where the processor has them) against SSE2's, folded (L > 1) and whole.
   for (const Window w : {Window{40, 6}, Window{52, 20}, Window{7, 1}}) {
