@@ -3,7 +3,8 @@
 # engines for the per-step speed-up over `direct` (whose dense kernel grows with the run: it is
 # the reference, not a production engine). Timed CLI runs; the figures come from each run's
 # summary.json (step_loop_time_s: the time-step loop alone).
-#   bash bench/tyre_speed.sh [CASE [SHORT_DURATION_S]]
+#   bash bench/tyre_speed.sh [CASE [SHORT_DURATION_S [KEY=VALUE ...]]]
+# KEY=VALUE pairs are passed on as --set (e.g. rolling.band_top=0 for the 512-cell grid).
 # Defaults: models/cases/plate_rough_80kmh.toml, 0.07 s. For two_layer_rough_80kmh.toml give a
 # shorter run (0.005 s): the direct kernel takes P² doubles per lag (33 MB at 2040 points).
 # A two-layer case also reports the time to build its tables (an empty cache) and to load them
@@ -16,12 +17,14 @@ cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
 exe=build-bench/tools/rollnoise/rollnoise
 case=${1:-models/cases/plate_rough_80kmh.toml}
 short=${2:-0.07}
+overrides=()
+for pair in "${@:3}"; do overrides+=(--set "$pair"); done
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 export ROLLNOISE_CACHE="$out/cache"  # an empty cache: the first run builds the tables
 run() {  # name engine duration
   CI=true "$exe" simulate "$case" --out "$out/$1" --set rolling.history="$2" --set rolling.duration="$3" \
-    --set output.plots=false >/dev/null
+    --set output.plots=false "${overrides[@]}" >/dev/null
 }
 field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d$2)" "$out/$1/summary.json"; }
 run modal_1s modal 1.0
