@@ -362,34 +362,48 @@ TEST(PMatrixLcp, WellConditionedSymmetricStepsByConjugateGradientsMatchTheFactor
 namespace rollnoise {
 namespace {
 
-TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
-  // A plate-like window matrix (a Winkler tread's own compliance, coupled smoothly to the whole
-  // patch by a belt, scaled condition number about 1.6): conjugate gradients that stop once a
-  // pivoting iteration's exchange is decided must take the exact solves' path, pivot for pivot,
-  // and end at the same solution, which the dense reference confirms (to the last solve's
-  // residual of 1e-11 rather than 1e-13).
-  const Window w{48, 8};
-  const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
+// A plate-like window matrix (a Winkler tread's own compliance, coupled smoothly to the whole
+// patch by a belt, scaled condition number about 1.6) and a rough road moving under it one cell
+// a step: the q of each step.
+struct PlateLikeRolling {
+  Window w{48, 8};
+  Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
     return (dx == 0 && dy == 0 ? 1.0 : 0.0) + 0.004 * std::exp(-std::sqrt(dx * dx + 4.0 * dy * dy) / 5.0);
   });
+  std::vector<double> road = [] {
+    std::mt19937_64 rng(6);
+    std::normal_distribution<double> normal;
+    std::vector<double> heights(500);
+    for (double& r : heights) r = 0.3 * normal(rng);
+    return heights;
+  }();
+  Eigen::VectorXd q(int step) const {
+    Eigen::VectorXd gaps(w.points());
+    for (int j = 0; j < w.lateral; ++j)
+      for (int i = 0; i < w.length; ++i) {
+        const double x = i - 0.5 * w.length;
+        gaps(w.index(i, j)) = 0.004 * x * x - 1.0 - road[static_cast<std::size_t>(i + step + 37 * j) % road.size()];
+      }
+    return gaps;
+  }
+};
+
+TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
+  // Conjugate gradients that stop once a pivoting iteration's exchange is decided must take the
+  // exact solves' path, pivot for pivot, and end at the same solution, which the dense reference
+  // confirms (to the last solve's residual of 1e-11 rather than 1e-13).
+  const PlateLikeRolling rolling;
+  const Window& w = rolling.w;
+  const Eigen::MatrixXd& m = rolling.m;
   const std::vector<Eigen::Index> shift = shift_back(w);
   PMatrixLcpSolver early(m, 48, ContactWindow{w.length, w.lateral});
   PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
   early.correct_warm_start(false);  // the same first set as the exact solves'
   exact.decide_early(false);
   ASSERT_TRUE(early.iterative());
-  std::mt19937_64 rng(6);
-  std::normal_distribution<double> normal;
-  std::vector<double> road(500);
-  for (double& r : road) r = 0.3 * normal(rng);
   long pivots = 0;
   for (int step = 0; step < 150; ++step) {
-    Eigen::VectorXd q(w.points());
-    for (int j = 0; j < w.lateral; ++j)
-      for (int i = 0; i < w.length; ++i) {
-        const double x = i - 0.5 * w.length;
-        q(w.index(i, j)) = 0.004 * x * x - 1.0 - road[static_cast<std::size_t>(i + step + 37 * j) % road.size()];
-      }
+    const Eigen::VectorXd q = rolling.q(step);
     if (step > 0) {
       early.relabel(shift, true);
       exact.relabel(shift, true);
@@ -411,29 +425,18 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
 }
 
 TEST(PMatrixLcp, AWarmStartCorrectedByItsGapsReachesTheSameSolutionInFewerPivots) {
-  // The same plate-like window and rough road: the last step's set corrected by the warm forces'
-  // gaps before the first solve must end at the exact solver's set and solution (the dense
-  // reference's), in fewer pivoting iterations.
-  const Window w{48, 8};
-  const Eigen::MatrixXd m = window_matrix(w, [](double dx, double dy) {
-    return (dx == 0 && dy == 0 ? 1.0 : 0.0) + 0.004 * std::exp(-std::sqrt(dx * dx + 4.0 * dy * dy) / 5.0);
-  });
+  // The last step's set corrected by the warm forces' gaps before the first solve must end at
+  // the exact solver's set and solution (the dense reference's), in fewer pivoting iterations.
+  const PlateLikeRolling rolling;
+  const Window& w = rolling.w;
+  const Eigen::MatrixXd& m = rolling.m;
   const std::vector<Eigen::Index> shift = shift_back(w);
   PMatrixLcpSolver corrected(m, 48, ContactWindow{w.length, w.lateral});
   PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
   exact.decide_early(false);
-  std::mt19937_64 rng(6);
-  std::normal_distribution<double> normal;
-  std::vector<double> road(500);
-  for (double& r : road) r = 0.3 * normal(rng);
   long pivots_corrected = 0, pivots_exact = 0;
   for (int step = 0; step < 150; ++step) {
-    Eigen::VectorXd q(w.points());
-    for (int j = 0; j < w.lateral; ++j)
-      for (int i = 0; i < w.length; ++i) {
-        const double x = i - 0.5 * w.length;
-        q(w.index(i, j)) = 0.004 * x * x - 1.0 - road[static_cast<std::size_t>(i + step + 37 * j) % road.size()];
-      }
+    const Eigen::VectorXd q = rolling.q(step);
     if (step > 0) {
       corrected.relabel(shift, true);
       exact.relabel(shift, true);
