@@ -122,6 +122,9 @@ class TyreStepOutputs final : public ContactStepSink {
            const Eigen::MatrixXd& v);
   // The waiting steps 0 … n − 1 (forces in patch_forces_), the two halves on two threads.
   void respond_waiting_steps();
+  // tread_row_ as row `index` of tread_velocity_, through staged_rows_ (consecutive indices).
+  void stage_tread_row(std::size_t index);
+  void write_staged_rows();
   // The patch is measured: the mesh is made and the waiting steps respond.
   void body_known();
   std::size_t strip_length() const;
@@ -150,6 +153,8 @@ class TyreStepOutputs final : public ContactStepSink {
   std::vector<double> patch_lengths_, patch_widths_;
   Eigen::MatrixXd tread_velocity_;
   Eigen::VectorXd tread_row_;  // one step's (for tread_sink, or copied into tread_velocity_)
+  Eigen::MatrixXd staged_rows_;  // rows of tread_velocity_ not yet written (stage_tread_row)
+  std::size_t staged_ = 0, staged_first_ = 0;
   Eigen::VectorXd snapshot_force_;
   double snapshot_total_ = -1.0, snapshot_time_ = 0.0;
   std::vector<double> revolution_;
