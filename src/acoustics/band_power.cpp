@@ -97,15 +97,18 @@ void PointAveragedPsd::push(std::span<const double> sample) {
   const std::size_t bins = power_.size();
   for (std::size_t p0 = 0; p0 < points_; p0 += kBlock) {
     const std::size_t block = std::min(kBlock, points_ - p0);
-    for (std::size_t i = 0; i < length_; ++i) {
-      const float* source = buffer_.data() + ((first_row + i) % length_) * points_ + p0;
-      for (std::size_t b = 0; b < block; ++b) gathered_[b * length_ + i] = source[b];
+    // The block's part of each row, in time order (rows first_row … N − 1, then 0 …), copied
+    // whole: a tile of N rows × block points that each point's transform reads down a column.
+    const float* source = buffer_.data() + first_row * points_ + p0;
+    for (std::size_t i = 0; i < length_; ++i, source += points_) {
+      if (i == length_ - first_row) source = buffer_.data() + p0;
+      std::copy_n(source, block, gathered_.data() + i * kBlock);
     }
     for (std::size_t b = 0; b < block; ++b) {
       const std::size_t p = p0 + b;
       if (!used_[p]) continue;
       std::fill(power_.begin(), power_.end(), 0.0);
-      segment_.add_power(gathered_.data() + b * length_, power_);
+      segment_.add_power(gathered_.data() + b, kBlock, power_);
       segment_.to_one_sided_density(power_, sample_rate_, 1);
       for (std::size_t a = 0; a < weights_.size(); ++a) {
         const double w = weights_[a][p];

@@ -54,10 +54,14 @@ void WelchSegment::transform_and_add(std::span<double> power) const {
 void WelchSegment::to_one_sided_density(std::span<double> power, double sample_rate, std::size_t segments) const {
   const std::size_t bins = power.size();
   const double scale = 1.0 / (sample_rate * window_power_ * static_cast<double>(segments));
-  for (std::size_t k = 0; k < bins; ++k) {
-    const bool unpaired = k == 0 || k == bins - 1;
-    power[k] *= (unpaired ? 1.0 : 2.0) * scale;
-  }
+  // DC and Nyquist apart, the same factor for every bin: a loop without a branch that the
+  // compiler vectorises (the branch per bin had made this a third of PointAveragedPsd::push's
+  // own instructions on the belt's 32 760 cells: callgrind). The same products as before.
+  if (bins == 0) return;
+  const double paired = 2.0 * scale, unpaired = 1.0 * scale;
+  power[0] *= unpaired;
+  for (std::size_t k = 1; k + 1 < bins; ++k) power[k] *= paired;
+  if (bins > 1) power[bins - 1] *= unpaired;
 }
 
 PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate, std::size_t segment_length) {

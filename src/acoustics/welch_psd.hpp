@@ -53,7 +53,13 @@ class WelchSegment {
   // It transforms in the object's own buffers: one object per thread.
   template <class Sample>
   void add_power(const Sample* x, std::span<double> power) const {
-    for (std::size_t i = 0; i < n_; ++i) in_.get()[i] = window_[i] * static_cast<double>(x[i]);
+    add_power(x, 1, power);
+  }
+  // The same for a segment whose samples lie `stride` apart: x[0], x[stride], … (a tile of
+  // several signals' segments interleaved; the same operations as add_power).
+  template <class Sample>
+  void add_power(const Sample* x, std::size_t stride, std::span<double> power) const {
+    for (std::size_t i = 0; i < n_; ++i) in_.get()[i] = window_[i] * static_cast<double>(x[i * stride]);
     transform_and_add(power);
   }
   // Turns Σ |X[k]|² over `segments` segments into the one-sided density (per Hz) in place: the

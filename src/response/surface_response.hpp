@@ -73,7 +73,6 @@ class SurfaceResponse {
   std::unique_ptr<ModalHistoryEngine> engine_;
   std::unique_ptr<RealFftBatch> fft_;
   Eigen::MatrixXd shapes_;  // φ_l(y_j): Ny × N
-  Eigen::MatrixXd around_;  // N × Nθ scratch
   // Out-of-roundness per mode, in the engine's fixed-frame modal amplitude (÷ weight),
   // advanced by e^{iω_m Δt} each step; empty when there is none.
   std::vector<std::complex<double>> out_of_round_;

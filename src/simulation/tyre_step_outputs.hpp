@@ -122,6 +122,9 @@ class TyreStepOutputs final : public ContactStepSink {
            const Eigen::MatrixXd& v);
   // The waiting steps 0 … n − 1 (forces in patch_forces_), the two halves on two threads.
   void respond_waiting_steps();
+  // tread_row_ as row `index` of tread_velocity_, through staged_rows_ (consecutive indices).
+  void stage_tread_row(std::size_t index);
+  void write_staged_rows();
   // The patch is measured: the mesh is made and the waiting steps respond.
   void body_known();
   std::size_t strip_length() const;
@@ -141,12 +144,17 @@ class TyreStepOutputs final : public ContactStepSink {
   std::vector<Eigen::Index> cell_under_;  // belt cell (j + Ny·g) under each window point
   std::vector<float> slice_, blocks_;
   std::vector<float> road_strip_;  // Ny × ((Nw − 1)·p + samples), row-major
-  Eigen::SparseMatrix<double> sampling_;  // empty until body_known()
+  // Empty until body_known(). Row-major: each tread point's sum gathers its belt cells in a
+  // register, in the same column order as the column-major scatter (the same sums bit for bit);
+  // the scatter's read-modify-write of the result had been half of use()'s own time (perf).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> sampling_;
   double indentation_ = 0.0;
   Eigen::MatrixXd patch_forces_;  // P × steps: the forces waiting for the radiating body
   std::vector<double> patch_lengths_, patch_widths_;
   Eigen::MatrixXd tread_velocity_;
-  Eigen::VectorXd tread_row_;  // one step's, for tread_sink
+  Eigen::VectorXd tread_row_;  // one step's (for tread_sink, or copied into tread_velocity_)
+  Eigen::MatrixXd staged_rows_;  // rows of tread_velocity_ not yet written (stage_tread_row)
+  std::size_t staged_ = 0, staged_first_ = 0;
   Eigen::VectorXd snapshot_force_;
   double snapshot_total_ = -1.0, snapshot_time_ = 0.0;
   std::vector<double> revolution_;

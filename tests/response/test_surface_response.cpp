@@ -1,7 +1,9 @@
 // The response stage against the contact run it follows: the belt displacement it evaluates
 // over the whole circumference (its own modal recursion, all Nθ positions by FFT) must equal,
 // at the contact window, what the contact solver computed through its history engine and G[0].
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -19,6 +21,25 @@ namespace {
 using response_test::Texture;
 using response_test::test_grid;
 using response_test::test_plate;
+
+// step() multiplies the lateral shapes by the transforms' fields where FFTW leaves them (rows of a
+// row-major matrix) instead of by a column-major copy: Eigen's product packs either into the
+// same blocks, so the fields are the same bit for bit (the outputs' byte identity rests on it).
+// Sizes of the 5 kHz grids (20 × 25 by 25 × 1638 and 1024) and of the tests.
+TEST(SurfaceResponse, ProductFromTheTransformsInPlaceIsTheCopysBitForBit) {
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  for (const auto [rows, modes, around] : {std::array{20, 25, 1638}, std::array{20, 25, 1024}, std::array{8, 6, 128},
+                                            std::array{24, 25, 128}, std::array{3, 7, 11}}) {
+    const Eigen::MatrixXd shapes = Eigen::MatrixXd::Random(rows, modes);
+    const RowMajor field = RowMajor::Random(modes, around) * 1e-3;
+    const Eigen::MatrixXd copy = field;  // column-major, as step() had copied it
+    Eigen::MatrixXd from_copy(rows, around), in_place(rows, around);
+    from_copy.noalias() = shapes * copy;
+    in_place.noalias() = shapes * Eigen::Map<const RowMajor>(field.data(), modes, around);
+    EXPECT_EQ(std::memcmp(from_copy.data(), in_place.data(), sizeof(double) * static_cast<std::size_t>(from_copy.size())), 0)
+        << rows << " x " << modes << " x " << around;
+  }
+}
 
 TEST(SurfaceResponse, MatchesTheContactSolutionAtTheWindow) {
   const TyreGrid grid = test_grid(128, 24);
