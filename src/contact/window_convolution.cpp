@@ -181,7 +181,8 @@ bool WindowConvolution::use_avx(bool on) noexcept {
 #if defined(ROLLNOISE_AVX_PRODUCTS)
   avx_ = on && __builtin_cpu_supports("avx");
 #else
-  avx_ = on && false;
+  (void)on;  // no AVX path on this processor family
+  avx_ = false;
 #endif
   return avx_;
 }
