@@ -21,6 +21,10 @@
 #include "road/portable_normal.hpp"
 #include "road/spectral_synthesis.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace rollnoise {
 namespace {
 
@@ -163,17 +167,45 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
     const double j_hi = std::min(static_cast<double>(held.first + held.count - 1),
                                  std::floor((y + a) / h + static_cast<double>(half_y)));
     if (i_lo > i_hi || j_lo > j_hi) continue;
+    const auto j_first = static_cast<std::size_t>(j_lo), j_last = static_cast<std::size_t>(j_hi);
     for (auto i = static_cast<std::size_t>(i_lo); i <= static_cast<std::size_t>(i_hi); ++i) {
       const double dx = h * static_cast<double>(i) - x;
-      for (auto j = static_cast<std::size_t>(j_lo); j <= static_cast<std::size_t>(j_hi); ++j) {
+      const double dx_cs = dx * cs, dx_sn = -dx * sn;
+      double* row = heights + i * y_count;  // cell j at row[j − held.first]
+      auto j = j_first;
+#if defined(__SSE2__)
+      // Two cells a time, each by the scalar loop's operations in its order (IEEE division and
+      // square root: the same bits); a cell outside the footprint keeps its height (its lane's
+      // root, of a negative number, is not used).
+      const __m128d v_dx_cs = _mm_set1_pd(dx_cs), v_dx_sn = _mm_set1_pd(dx_sn), v_sn = _mm_set1_pd(sn),
+                    v_cs = _mm_set1_pd(cs), v_a = _mm_set1_pd(a), v_b = _mm_set1_pd(b), v_h = _mm_set1_pd(h),
+                    v_y = _mm_set1_pd(y), v_c = _mm_set1_pd(c), v_zc = _mm_set1_pd(z_c),
+                    v_one = _mm_set1_pd(1.0), v_t = _mm_set1_pd(thickness),
+                    v_half = _mm_set1_pd(static_cast<double>(half_y));
+      for (; j + 1 <= j_last; j += 2) {
+        const __m128d v_j = _mm_set_pd(static_cast<double>(j + 1), static_cast<double>(j));
+        const __m128d dy = _mm_sub_pd(_mm_mul_pd(v_h, _mm_sub_pd(v_j, v_half)), v_y);
+        const __m128d along = _mm_div_pd(_mm_add_pd(v_dx_cs, _mm_mul_pd(dy, v_sn)), v_a);
+        const __m128d across = _mm_div_pd(_mm_add_pd(v_dx_sn, _mm_mul_pd(dy, v_cs)), v_b);
+        const __m128d rho2 = _mm_add_pd(_mm_mul_pd(along, along), _mm_mul_pd(across, across));
+        __m128d top = _mm_add_pd(v_zc, _mm_mul_pd(v_c, _mm_sqrt_pd(_mm_sub_pd(v_one, rho2))));
+        if (negative) top = _mm_min_pd(top, v_t);
+        double* cells = row + (j - held.first);
+        const __m128d cell = _mm_loadu_pd(cells);
+        const __m128d inside = _mm_cmplt_pd(rho2, v_one);
+        const __m128d higher = _mm_max_pd(cell, top);
+        _mm_storeu_pd(cells, _mm_or_pd(_mm_and_pd(inside, higher), _mm_andnot_pd(inside, cell)));
+      }
+#endif
+      for (; j <= j_last; ++j) {
         const double dy = h * (static_cast<double>(j) - static_cast<double>(half_y)) - y;
-        const double along = (dx * cs + dy * sn) / a;
-        const double across = (-dx * sn + dy * cs) / b;
+        const double along = (dx_cs + dy * sn) / a;
+        const double across = (dx_sn + dy * cs) / b;
         const double rho2 = along * along + across * across;
         if (rho2 >= 1.0) continue;
         double top = z_c + c * std::sqrt(1.0 - rho2);
         if (negative) top = std::min(top, thickness);
-        double& cell = heights[i * y_count + (j - held.first)];
+        double& cell = row[j - held.first];
         cell = std::max(cell, top);
       }
     }
