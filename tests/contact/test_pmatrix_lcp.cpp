@@ -386,6 +386,19 @@ struct PlateLikeRolling {
       }
     return gaps;
   }
+  // Step `step` for two solvers of this matrix: the road moved on one cell (their warm starts
+  // relabelled, after the first step) and solved. Returns the step's q.
+  Eigen::VectorXd roll(int step, PMatrixLcpSolver& a, PMatrixLcpSolver& b) const {
+    const Eigen::VectorXd gaps = q(step);
+    if (step > 0) {
+      const std::vector<Eigen::Index> shift = shift_back(w);
+      a.relabel(shift, true);
+      b.relabel(shift, true);
+    }
+    a.solve(gaps);
+    b.solve(gaps);
+    return gaps;
+  }
 };
 
 TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
@@ -395,7 +408,6 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
   const PlateLikeRolling rolling;
   const Window& w = rolling.w;
   const Eigen::MatrixXd& m = rolling.m;
-  const std::vector<Eigen::Index> shift = shift_back(w);
   PMatrixLcpSolver early(m, 48, ContactWindow{w.length, w.lateral});
   PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
   early.correct_warm_start(false);  // the same first set as the exact solves'
@@ -403,13 +415,9 @@ TEST(PMatrixLcp, EarlyDecidedExchangesFollowTheExactSolvesPivotForPivot) {
   ASSERT_TRUE(early.iterative());
   long pivots = 0;
   for (int step = 0; step < 150; ++step) {
-    const Eigen::VectorXd q = rolling.q(step);
-    if (step > 0) {
-      early.relabel(shift, true);
-      exact.relabel(shift, true);
-    }
-    const PMatrixLcpResult& a = early.solve(q);
-    const PMatrixLcpResult& b = exact.solve(q);
+    const Eigen::VectorXd q = rolling.roll(step, early, exact);
+    const PMatrixLcpResult& a = early.result();
+    const PMatrixLcpResult& b = exact.result();
     const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
     ASSERT_EQ(a.iterations, b.iterations) << "step " << step;
     ASSERT_EQ(a.basic, b.basic) << "step " << step;
@@ -430,19 +438,14 @@ TEST(PMatrixLcp, AWarmStartCorrectedByItsGapsReachesTheSameSolutionInFewerPivots
   const PlateLikeRolling rolling;
   const Window& w = rolling.w;
   const Eigen::MatrixXd& m = rolling.m;
-  const std::vector<Eigen::Index> shift = shift_back(w);
   PMatrixLcpSolver corrected(m, 48, ContactWindow{w.length, w.lateral});
   PMatrixLcpSolver exact(m, 48, ContactWindow{w.length, w.lateral});
   exact.decide_early(false);
   long pivots_corrected = 0, pivots_exact = 0;
   for (int step = 0; step < 150; ++step) {
-    const Eigen::VectorXd q = rolling.q(step);
-    if (step > 0) {
-      corrected.relabel(shift, true);
-      exact.relabel(shift, true);
-    }
-    const PMatrixLcpResult& a = corrected.solve(q);
-    const PMatrixLcpResult& b = exact.solve(q);
+    const Eigen::VectorXd q = rolling.roll(step, corrected, exact);
+    const PMatrixLcpResult& a = corrected.result();
+    const PMatrixLcpResult& b = exact.result();
     const PMatrixLcpResult reference = solve_pmatrix_lcp(m, q);
     ASSERT_EQ(a.basic, reference.basic) << "step " << step;
     ASSERT_LE(kkt_violation(m, q, a.z), 2e-11) << "step " << step;
