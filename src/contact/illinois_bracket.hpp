@@ -3,6 +3,10 @@
 // regula falsi with the Illinois modification (Dowell & Jarratt, BIT 11 (1971) 168–174): when the
 // same end moves twice running, the value kept at the other end is halved, so that an end that
 // stays does not stall the iteration. Used for the indentation that carries a load, ΣF(d) = W.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace rollnoise {
 
 struct IllinoisBracket {
@@ -27,5 +31,23 @@ struct IllinoisBracket {
     }
   }
 };
+
+// The first bracket of the indentation that carries the load: from the first touch (where
+// f(touch) = f_touch < 0) down to touch + first_depth, the depth doubled until f ≥ 0. A depth
+// beyond max_depth, or not finite, is a runtime_error with `failure`.
+template <class F>
+IllinoisBracket bracket_by_doubling(double touch, double f_touch, double first_depth, double max_depth,
+                                    const std::string& failure, F&& f) {
+  IllinoisBracket bracket{touch, f_touch, touch + first_depth, 0.0};
+  bracket.f_hi = f(bracket.hi);
+  while (bracket.f_hi < 0.0) {
+    bracket.lo = bracket.hi;
+    bracket.f_lo = bracket.f_hi;
+    bracket.hi = touch + 2.0 * (bracket.hi - touch);
+    if (!std::isfinite(bracket.hi) || bracket.hi - touch > max_depth) throw std::runtime_error(failure);
+    bracket.f_hi = f(bracket.hi);
+  }
+  return bracket;
+}
 
 }  // namespace rollnoise

@@ -144,16 +144,8 @@ StaticContact steady_nonlinear_contact(Contact& contact, const Eigen::VectorXd& 
     contact.solve(q);
     return contact.force().sum() - load;
   };
-  double lo = touch, f_lo = -load;
-  double hi = touch + 1e-3, f_hi = excess(hi);
-  while (f_hi < 0.0) {
-    lo = hi;
-    f_lo = f_hi;
-    hi = touch + 2.0 * (hi - touch);
-    if (hi - touch > 1.0) throw std::runtime_error("steady rolling: no indentation below 1 m carries the load");
-    f_hi = excess(hi);
-  }
-  IllinoisBracket bracket{lo, f_lo, hi, f_hi};
+  IllinoisBracket bracket = bracket_by_doubling(touch, -load, 1e-3, 1.0,
+                                                "steady rolling: no indentation below 1 m carries the load", excess);
   for (int iteration = 0; iteration < 200 && std::abs(bracket.hi - bracket.lo) > 1e-15 * std::abs(bracket.hi);
        ++iteration) {
     const double d = bracket.regula_falsi();

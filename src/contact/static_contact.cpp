@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <vector>
 
-
 #include "contact/illinois_bracket.hpp"
 #include "contact/pmatrix_lcp.hpp"
 
@@ -32,23 +31,15 @@ StaticContact solve_static_contact(const Eigen::MatrixXd& compliance,
   // A bracket [lo, hi] with ΣF(lo) ≤ W ≤ ΣF(hi). The first guess takes the points as uncoupled
   // and all in contact (Σ 1/C_ii per metre, stiffer than the coupled body), doubled until it
   // carries the load.
-  double lo = touch, f_lo = -load;
-  double hi = touch + load / compliance.diagonal().cwiseInverse().sum();
-  double f_hi = excess(hi);
-  while (f_hi < 0.0) {
-    lo = hi;
-    f_lo = f_hi;
-    hi = touch + 2.0 * (hi - touch);
-    if (!std::isfinite(hi)) throw std::runtime_error("static contact: no indentation carries the load");
-    f_hi = excess(hi);
-  }
+  IllinoisBracket bracket =
+      bracket_by_doubling(touch, -load, load / compliance.diagonal().cwiseInverse().sum(), INFINITY,
+                          "static contact: no indentation carries the load", excess);
   // ΣF(d) is piecewise linear and increasing, linear on each contact set: two trials on the same
   // set give the exact root of that piece by their secant (Newton's step with the slope
   // 1ᵀ·C_AA⁻¹·1, without a factorisation of its own). Otherwise regula falsi on the bracket.
-  IllinoisBracket bracket{lo, f_lo, hi, f_hi};
-  double d = hi, f = f_hi;
+  double d = bracket.hi, f = bracket.f_hi;
   std::vector<char> last_set = lcp.result().basic;
-  double last_d = hi, last_f = f_hi;
+  double last_d = d, last_f = f;
   bool have_last = false;
   for (int iteration = 0; iteration < 200 && std::abs(f) > 1e-14 * load; ++iteration) {
     double next = bracket.regula_falsi();
