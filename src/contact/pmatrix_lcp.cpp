@@ -93,24 +93,21 @@ MatrixBounds matrix_bounds(const Eigen::MatrixXd& m) {
   const Eigen::VectorXd d = m.diagonal();
   MatrixBounds bounds;
   double largest = 0.0, asymmetry = 0.0;
-  for (Eigen::Index j = 0; j < n; ++j)
-    for (Eigen::Index i = 0; i < n; ++i) {
-      largest = std::max(largest, std::abs(m(i, j)));
-      if (i < j) asymmetry = std::max(asymmetry, std::abs(m(i, j) - m(j, i)));
-    }
-  bounds.symmetric = asymmetry <= 1e-14 * largest;
   Eigen::VectorXd scaled = Eigen::VectorXd::Zero(n), squares = Eigen::VectorXd::Zero(n), sums = Eigen::VectorXd::Zero(n);
   const bool positive = n > 0 && d.minCoeff() > 0.0;
   const Eigen::VectorXd root = positive ? Eigen::VectorXd(d.cwiseSqrt().cwiseInverse()) : Eigen::VectorXd::Zero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const double* column = m.col(j).data();
     for (Eigen::Index i = 0; i < n; ++i) {
+      largest = std::max(largest, std::abs(column[i]));
+      if (i < j) asymmetry = std::max(asymmetry, std::abs(column[i] - m(j, i)));
       if (i == j) continue;
       scaled(i) += std::abs(column[i]) * root(j);
       squares(i) += column[i] * column[i];
       sums(i) += std::abs(column[i]);
     }
   }
+  bounds.symmetric = asymmetry <= 1e-14 * largest;
   if (positive) bounds.radius = scaled.cwiseProduct(root).maxCoeff();
   bounds.row_norm = squares.cwiseSqrt().maxCoeff();
   bounds.row_sum = sums.maxCoeff();
@@ -274,16 +271,18 @@ PMatrixLcpSolver::Cg PMatrixLcpSolver::conjugate_gradients(const std::vector<cha
   // block (those that enter had z = 0), whose columns of M are taken off when they are fewer
   // than a product's cost (a column is n multiply-adds from the kernel along x, which stays in
   // cache; a product a few dozen n).
-  Eigen::Index leaving = 0;
-  if (mz_valid_ && decide_early_)
+  bool by_columns = mz_valid_ && decide_early_;
+  if (by_columns) {
+    Eigen::Index leaving = 0;
     for (Eigen::Index i = 0; i < n; ++i) leaving += !basic[static_cast<std::size_t>(i)] && z(i) != 0.0;
-  if (mz_valid_ && decide_early_ && leaving <= kLeavingColumns) {
+    by_columns = leaving <= kLeavingColumns;
+  }
+  if (by_columns)
     for (Eigen::Index i = 0; i < n; ++i)
       if (!basic[static_cast<std::size_t>(i)] && z(i) != 0.0) product_->subtract_column(i, z(i), mz_);
-  }
   for (Eigen::Index i = 0; i < n; ++i) mask_(i) = basic[static_cast<std::size_t>(i)] ? 1.0 : 0.0;
   z.array() *= mask_.array();
-  if (!(mz_valid_ && decide_early_ && leaving <= kLeavingColumns)) product_->apply(z, mz_);
+  if (!by_columns) product_->apply(z, mz_);
   mz_valid_ = false;
   const double scale = q.cwiseAbs().maxCoeff() + 1e-300;
   const double stop = 1e-13 * scale;
