@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Coverage-guided fuzzing of every reader of outside data (fuzz/<target>.cpp, docs/hardening.md)
+# Coverage-guided fuzzing of every reader of outside data (fuzz/<target>.cpp, docs/reliability.md)
 # with libFuzzer (clang from Debian's packages), each target for SECONDS (default 60).
 #   bash tools/fuzz.sh [SECONDS] [TARGET...]
 # Builds build-fuzz/ (clang, -DROLLNOISE_FUZZ=ON: libFuzzer's coverage, ASan and UBSan), then

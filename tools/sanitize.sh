@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds rollnoise with AddressSanitizer and UndefinedBehaviorSanitizer (clang from Debian's
 # packages, gcc if clang is missing) in build-sanitize/ and runs the test suite under them.
-#   bash tools/sanitize.sh            the whole suite (see docs/hardening.md for how long)
+#   bash tools/sanitize.sh            the whole suite (see docs/reliability.md for how long)
 #   bash tools/sanitize.sh REGEX      only the tests whose names match REGEX (ctest -R)
 #   bash tools/sanitize.sh --readers  CI's subset: builds only the replay drivers of the fuzz
 #                                     targets and runs them over every corpus (every reader of

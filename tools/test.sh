@@ -2,7 +2,7 @@
 # Set up, build (Release with assertions on) and run the whole test suite with ctest; then the
 # sanitizers on their named subset: every reader of outside data replayed over its whole corpus
 # under ASan + UBSan (tools/sanitize.sh --readers; the whole suite under the sanitizers takes too
-# long for CI's 90 minutes: docs/hardening.md).
+# long for CI's 90 minutes: docs/reliability.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh

@@ -227,7 +227,7 @@ int run_road(const RoadOptions& options) {
   if (is_toml) {
     // A generated road's size is set by the command line (up to max_profile_samples × 1000
     // lines, hundreds of GB): refused before it is sampled when it cannot fit. A profile file's
-    // is bounded by its reader's limits (docs/hardening.md).
+    // is bounded by its reader's limits (docs/reliability.md).
     const auto samples = static_cast<std::uint64_t>(std::floor(options.length / options.spacing)) + 1;
     check_run_fits(estimate_road_run(samples, static_cast<std::uint64_t>(options.lines), options.input),
                    available_memory_bytes(), available_disk_bytes(out), options.force);
