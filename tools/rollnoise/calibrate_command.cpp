@@ -344,7 +344,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
                   "output there is replaced");
   cmd->add_option("--data-type", options.data_type,
                   "What the data is when a file does not say: mobility (m/(N s)), receptance (m/N) or accelerance "
-                  "(m/(N s^2)); given explicitly, a file that says otherwise is an error")
+                  "(m/(N s^2)); default mobility; given explicitly, a file that says otherwise is an error")
       ->check(CLI::IsMember({"mobility", "receptance", "accelerance"}));
   cmd->add_option("--response", options.response,
                   "Response position X,Y in m (tyre models: x along the circumference, y across the belt from one "
@@ -356,7 +356,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
       ->allow_extra_args(false);
   cmd->add_option("--transducer-mass", options.transducer_mass,
                   "Mass (kg) of the transducer at each response point (mass loading); the starting value when "
-                  "transducer_mass is fitted")
+                  "transducer_mass is fitted (default 0)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--frequency-range", options.frequency_range,
                   "LO:HI in Hz: fit only these lines (within the model's valid range; two_layer solves exactly "
@@ -365,14 +365,16 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
                   "Number of starting points (the model file's values, then seeded draws within a factor of ten); "
                   "default 8, for two_layer 1")
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--seed", options.seed, "Seed of the starting points");
+  cmd->add_option("--seed", options.seed,
+                  "Seed of the starting points (default 1; the same data and seed give the same result)");
   cmd->add_option("--first-stage", options.first_stage,
                   "Frequency continuation: fit the lines up to this frequency (Hz) first, then up to twice it, and "
                   "so on to the whole band, each stage from the last one's result (default: the model's choice, "
                   "twice the lowest resonance for two_layer, none for the others; 0: the whole band at once)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--loss-scale", options.loss_scale,
-                  "Scale of the Cauchy loss on the log residual: lines far beyond it (outliers) weigh less")
+                  "Scale of the Cauchy loss on the log residual (default 0.25, about 2 dB or 14 degrees): lines far "
+                  "beyond it (outliers) weigh less")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--force", options.force,
                 "Run even when the estimate of the fit's memory or output (its measured lines) exceeds what the "
@@ -382,7 +384,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
       "    --data data/mobility/tyre_point_mobility.csv data/mobility/tyre_transfer_mobility.csv \\\n"
       "    --fit tension_x,bending_x,foundation_stiffness,loss_factor --out out/calibrated\n"
       "Then: rollnoise simulate CASE.toml --set tyre.file=out/calibrated/calibrated.toml\n"
-      "See the Calibration section of README.md.");
+      "See docs/tutorials/calibrate-tyre.md; every option: docs/reference/commands.md.");
   cmd->callback([cmd, &options] { options.data_type_given = cmd->count("--data-type") > 0; });
   return cmd;
 }

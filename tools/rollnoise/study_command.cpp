@@ -28,7 +28,8 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
       "are kept on a rerun. A case that fails is reported and the others go on; the exit status\n"
       "is then 1.");
   cmd->add_option("study", options.study_file, "Study file (TOML) with [study], [set] and [vary]")->required();
-  cmd->add_option("--out", options.out, "Output folder (default: out/<study name>)");
+  cmd->add_option("--out", options.out, "Output folder (default: out/<study name>); each case is written atomically into cases/<id>/, "
+                  "the results when every case has ended");
   cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
   add_cache_options(*cmd, options.cache, options.no_cache);
