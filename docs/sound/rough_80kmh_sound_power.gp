@@ -1,4 +1,4 @@
-# Drawn by rollnoise from sound_power.csv; run `gnuplot sound_power.gp` to redraw.
+# Drawn by rollnoise from sound_power.csv of `rollnoise simulate models/cases/plate_rough_80kmh.toml`, renamed rough_80kmh_sound_power.*; run `gnuplot rough_80kmh_sound_power.gp` to redraw.
 set terminal pngcairo size 1000,550 noenhanced font 'DejaVu Sans,10'
 set output 'rough_80kmh_sound_power.png'
 set datafile separator ','

@@ -1,4 +1,4 @@
-# Drawn by rollnoise from spectrum.csv; run `gnuplot spectrum.gp` to redraw.
+# Drawn by rollnoise from spectrum.csv of `rollnoise simulate models/cases/plate_rough_80kmh.toml`, renamed rough_80kmh_spectrum.*; run `gnuplot rough_80kmh_spectrum.gp` to redraw.
 set terminal pngcairo size 1000,550 noenhanced font 'DejaVu Sans,10'
 set output 'rough_80kmh_spectrum.png'
 set datafile separator ','
