@@ -3,7 +3,8 @@
 # in docs/validation.md. The 205/55 R16 tyre case (models/cases/plate_rough_80kmh.toml, 0.2 s)
 # rolls on each library surface at 50 and 80 km/h; the CPX level is the energy mean of the two
 # CPX microphones (cpx_front, cpx_rear), as ISO 11819-2 averages its microphones.
-# Writes out/validation/{validation.csv, spectra.csv, validation_table.md} and one run folder per
+# Writes out/validation/{validation.csv, spectra.csv, validation_table.md}, the figure of the CPX
+# spectra per surface at 80 km/h (cpx_spectra_surfaces.{gp,png}, the front page's figure) and one run folder per
 # surface and speed (a finished run is kept: delete its folder, or pass --force, to redo it).
 # Needs a built tree (bash tools/setup.sh). Takes 1.5-2 min per run on 2 cores.
 #
@@ -12,7 +13,7 @@
 #   [C2] Flemish AWV CPX surveys (SRTT), 80 km/h: SMA-C 10 mm 99.6 (mean of 70), EACC 0/6.3 98.5
 set -euo pipefail
 cd "$(dirname "$0")/.."
-rollnoise=build/tools/rollnoise/rollnoise
+rollnoise=${ROLLNOISE:-build/tools/rollnoise/rollnoise}
 out=out/validation
 force=0
 [[ "${1:-}" == "--force" ]] && force=1
@@ -74,4 +75,23 @@ sort -t, -k2,2n -k1,1 "$out/validation.csv.tmp" > "$out/validation.csv"; rm "$ou
   awk -F, 'NR > 1 { d = ($4 == "NA") ? "—" : sprintf("%+.1f", $3 - $4);
                     printf "| %s | %s | %s | %s | %s | %s | %s | %s / %s / %s / %s |\n", $1, $2, $3, ($4 == "NA" ? "—" : $4), d, ($5 == "-" ? "—" : $5), $6, $7, $8, $9, $10 }' "$out/validation.csv"
 } > "$out/validation_table.md"
+# The A-weighted CPX spectra of every surface at 80 km/h in one figure, drawn from spectra.csv.
+cat > "$out/cpx_spectra_surfaces.gp" <<'GP'
+# Drawn by tools/validation.sh from spectra.csv; run `gnuplot cpx_spectra_surfaces.gp` to redraw.
+set terminal pngcairo size 1000,560 noenhanced font 'DejaVu Sans,10'
+set output 'cpx_spectra_surfaces.png'
+set datafile separator ','
+set grid
+set logscale x
+set xrange [90:5600]
+set xtics (100, 200, 315, 500, 800, 1250, 2000, 3150, 5000)
+set xlabel 'third-octave band (Hz)'
+set ylabel 'LpA, CPX (energy mean of front and rear), dB(A)'
+set key outside right
+set title '205/55 R16 plate tyre, 80 km/h, 3200 N, 0.2 s, on each library surface'
+surfaces = system("awk -F, 'NR > 1 && $2 == 80 && !seen[$1]++ { printf \"%s \", $1 }' spectra.csv")
+plot for [s in surfaces] 'spectra.csv' using (strcol(1) eq s && $2 == 80 ? $3 : 1/0):4 \
+       with linespoints pt 7 ps 0.6 title s
+GP
+if command -v gnuplot > /dev/null; then (cd "$out" && gnuplot cpx_spectra_surfaces.gp); fi
 cat "$out/validation_table.md"

@@ -20,9 +20,9 @@ struct Link {
 // Inline links and images [text](target "title"), reference definitions [id]: target, and
 // <img src="target">, outside code.
 std::vector<Link> links_of(const std::string& text) {
-  static const std::regex inline_link(R"(\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\))");
-  static const std::regex reference(R"(^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s+.*)?$)");
-  static const std::regex image_tag(R"(<img[^>]*\bsrc\s*=\s*"([^"]+)")");
+  static const std::regex inline_link(R"re(\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\))re");
+  static const std::regex reference(R"re(^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s+.*)?$)re");
+  static const std::regex image_tag(R"re(<img[^>]*\bsrc\s*=\s*"([^"]+)")re");
   std::vector<Link> links;
   const auto lines = docs_test::prose_lines(text);
   for (std::size_t n = 0; n < lines.size(); ++n) {

@@ -18,7 +18,7 @@ bool is_user_page(const path& page) {
 // Words that belong to how the code was written, not to what it does.
 std::string development_talk(const std::string& line) {
   static const std::regex talk(
-      R"(\b(sessions?|helpers?|yesterday|issues? ?#?[0-9]+|tasks? #?[0-9]+|#[0-9]{1,3}\b))",
+      R"re(\b(sessions?|helpers?|yesterday|issues? ?#?[0-9]+|tasks? #?[0-9]+)\b|#[0-9]{1,3}\b)re",
       std::regex::icase);
   std::smatch match;
   return std::regex_search(line, match, talk) ? match[0].str() : "";
@@ -59,8 +59,8 @@ TEST(UserPages, TheCheckRecognisesHistory) {
 // A figure is shown with its date (YYYY-MM-DD) within a few lines of the image, where the caption
 // says when, on what machine and by which command it was made.
 TEST(UserPages, EveryFigureCarriesItsDate) {
-  static const std::regex image(R"(!\[[^\]]*\]\(([^)\s]+))");
-  static const std::regex date(R"(\b20[0-9]{2}-[01][0-9]-[0-3][0-9]\b)");
+  static const std::regex image(R"re(!\[[^\]]*\]\(([^)\s]+))re");
+  static const std::regex date(R"re(\b20[0-9]{2}-[01][0-9]-[0-3][0-9]\b)re");
   std::ostringstream undated;
   std::size_t figures = 0;
   for (const path& page : docs_test::manual_pages()) {
