@@ -7,7 +7,7 @@
 # Every speed now carries the bands up to 5 kHz (issue 10 §3: sub-steps per cell). The levels
 # are also given over the bands up to 1.6 kHz: above about 0.5·V/Δx (1.8 kHz at 50 km/h, with
 # Δx the 3.9 mm grid spacing around the tyre) the bands carry the cell-passing artefact of the
-# fixed contact points (README, "The band up to 5 kHz"), so those are the bands all three speeds
+# fixed contact points (docs/physics/contact.md, "The band up to 5 kHz"), so those are the bands all three speeds
 # give cleanly.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -8,7 +8,7 @@
 //
 // The rolling tyre now solves its steps and steady state by TreadNewtonContact
 // (tread_newton_contact.hpp: 2.5 ms a step against this one's 7.2 s on plate_rough_80kmh,
-// README); this solver is the reference the tests compare it with (NonlinearTreadSolver::kinsol).
+// docs/performance.md); this solver is the reference the tests compare it with (NonlinearTreadSolver::kinsol).
 #include <vector>
 
 #include <Eigen/Core>

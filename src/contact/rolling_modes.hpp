@@ -33,7 +33,7 @@
 // the shortest force pattern and texture wavelength seen across the window (2·dx), does not.
 // Because the window's points are fixed and the texture (and the tread stuck to it) moves past
 // them, the contact's nonlinearity modulates the forces at the cell-passing frequency v/dx, which
-// sub-steps bring into the band (at p = 1 it aliases to 0 Hz): README, "The band up to 5 kHz".
+// sub-steps bring into the band (at p = 1 it aliases to 0 Hz): docs/physics/contact.md, "The band up to 5 kHz".
 #include <complex>
 #include <vector>
 

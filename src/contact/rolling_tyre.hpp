@@ -37,7 +37,7 @@ class ProgressReporter;
 //    3.6·dx; −6 dB at 2·dx; −26 dB at 1.5·dx, −40 to −57 dB from 1.42·dx to dx. What the points
 //    cannot resolve is removed instead of aliased.
 // Neither removes the modulation at v/dx that the contact's own nonlinearity makes as texture
-// features pass the fixed points (README, "The band up to 5 kHz").
+// features pass the fixed points (docs/physics/contact.md, "The band up to 5 kHz").
 enum class RoadSampling { point, cell_mean, lowpass };
 
 // When the skew part of G0, taken one step late, would multiply a perturbation of the forces by

@@ -1,6 +1,6 @@
 #pragma once
 // The per-step contact of a rolling tyre with a nonlinear tread (springs F_p = k_p·δ_p^n in
-// series with the structure, README "The rolling tyre"), solved fast enough for long runs.
+// series with the structure, docs/physics/contact.md, "The rolling tyre"), solved fast enough for long runs.
 //
 // The problem (the same as NonlinearTreadContact's, which solves it with KINSOL and stays the
 // reference): with the structure's instantaneous compliance A (P × P) and the known part q,

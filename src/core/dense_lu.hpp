@@ -3,7 +3,7 @@
 // capacity fixed at construction, in storage allocated once: LAPACK's dgetrf/dgetrs (OpenBLAS,
 // single-threaded: blas_threads.hpp), so that a solver refactorising inside a time-step loop
 // allocates nothing there. About twice the speed of Eigen's portable kernels at the contact's
-// sizes (n = 400–1000: 7 ms against 15 ms at n = 700 on the 2-core machine of the README).
+// sizes (n = 400–1000: 7 ms against 15 ms at n = 700 on a 2-core machine).
 #include <vector>
 
 #include <Eigen/Core>

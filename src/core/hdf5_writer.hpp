@@ -16,7 +16,7 @@ namespace rollnoise {
 // How a streamed dataset is stored: `chunk_slices` slices to an HDF5 chunk (the stream keeps
 // one chunk in memory and writes it whole), and HDF5's shuffle + deflate at `deflate_level`
 // (1–9; 0: none). Shuffle groups the bytes of equal significance, so the zeros outside the
-// contact and the slowly varying high bytes compress (measured in README, "Memory and output size").
+// contact and the slowly varying high bytes compress (measured in docs/performance.md).
 struct Hdf5StreamLayout {
   std::size_t chunk_slices = 1;
   int deflate_level = 0;

@@ -32,7 +32,7 @@
 //     waves at Δt = 0.175 ms (m = 128 … 256) 4× folding is 0.4–3 % off 16×. Modes whose dynamics lie far above the Nyquist frequency
 //     (c_R·k ≫ π/Δt: short waves on a coarse time step) are nearly instantaneous at this Δt; they
 //     need an oversampling of about c_R·k·Δt/π to keep their quasi-static compliance in the right
-//     sample (see the README: a pole–residue form is the better route for those).
+//     sample (docs/physics/tyre-models.md: a pole–residue form is the better route for those).
 //   - The record's periodicity. An exponential window e^{−σt}, σ = ln(10⁴)/T (T = KΔt; the
 //     spectrum evaluated at ω − iσ, the window undone after the transform) damps what rings
 //     beyond the record by 10⁴ before it wraps round into the early samples (Kausel & Roësset

@@ -68,7 +68,7 @@ EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& med
 // levels there are what they were; combined sources above, where the monopoles' interior
 // resonances are every few Hz and rebuilt a monopole's field 40–65 % wrong at 4–5 kHz. (The
 // combined sources check better below too, but move the runs' CPX levels by 1–2 dB there: see
-// README, "The band to 5 kHz in the radiation".)
+// docs/physics/radiation.md, "The band to 5 kHz".)
 constexpr double kCombinedSourcesAboveHz = 3000.0;
 
 struct TyreRadiationSettings {

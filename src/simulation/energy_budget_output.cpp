@@ -26,7 +26,7 @@ constexpr double force_reference = 1.0;      // N
 constexpr double velocity_reference = 1e-9;  // m/s
 constexpr double power_reference = 1e-12;    // W
 
-// The horn gain measured with the default mesh, the loaded tyre (README, "The horn";
+// The horn gain measured with the default mesh, the loaded tyre (docs/physics/radiation.md, "The horn";
 // test_horn_effect.cpp): the middle of each range over the three receivers in the tyre plane,
 // 0.5–1 m ahead, 5–20 cm high, source 5 cm ahead of the patch edge (500 Hz 11.1–12.2, 1 kHz
 // 13.7–14.6, 2 kHz 5.4–7.9 dB, the last not converged: the reciprocal estimate is 4 dB higher),

@@ -12,7 +12,7 @@
 //    n, p sub-steps per cell: each height once, not once per window column); and the belt's
 //    radial velocity averaged over blocks of cells (SurfaceBlock below) at every step. float32,
 //    chunked, shuffle + deflate: about 42 MB per simulated second at 80 km/h on the 5 kHz grid
-//    (measured: README, "Memory and output size");
+//    (measured: docs/performance.md);
 //  - "all": also the road and the tread surface's displacement over the window at every step, the
 //    belt's displacement, and the belt's velocity at every cell (about 1.5 GB per second);
 //  - "none": no contact.h5 (contact.csv and the other outputs as usual).

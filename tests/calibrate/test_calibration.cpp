@@ -403,7 +403,7 @@ TEST(Calibration, PlateRecoversTensionBendingFoundationAndLossFromPointAndTransf
 // start from the file's values, by frequency continuation (25–170 Hz, then the whole band),
 // must recover every parameter within three of its standard errors (nine parameters: with two,
 // one of them would miss a third of the time), which the conditioning (the singular values
-// printed) keeps between 0.1 % and 7 %. Over ten noise seeds (README) the errors in standard
+// printed) keeps between 0.1 % and 7 %. Over ten noise seeds (docs/physics/calibration.md) the errors in standard
 // errors have an RMS of 0.86 (89 of 90 within two).
 TEST(Calibration, TwoLayerRecoversBeltTensionFoundationTreadAndLossFactors) {
   const auto started = std::chrono::steady_clock::now();

@@ -266,7 +266,7 @@ TEST(CalibrateCli, BadDataIsOneMessageAndExitStatusTwo) {
                    "larsson2000_sdof_sine.toml: tyre: calibrate takes a model file");
 }
 
-// The two-layer tyre (issue 11), as README's walkthrough runs it: four FRFs on 10 mm cells of
+// The two-layer tyre (issue 11), as the calibration tutorial runs it: four FRFs on 10 mm cells of
 // the tread from one UFF file, nine parameters 15–40 % off in the model file, one start by
 // frequency continuation. About 25 s on two shared cores.
 TEST(CalibrateCli, TwoLayerFromUffRecoversItsNineParameters) {

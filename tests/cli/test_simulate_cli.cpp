@@ -473,7 +473,7 @@ TEST(SimulateCli, PlateTyreGridCarriesTheBandTo5kHzByDefault) {
 }
 
 // A given grid too coarse for the band takes sub-steps instead (with the cell-passing artefact
-// the README describes). At 30 km/h on 512 cells that takes p = 6 sub-steps per cell (Nyquist
+// docs/physics/contact.md describes). At 30 km/h on 512 cells that takes p = 6 sub-steps per cell (Nyquist
 // 6.45 kHz), the radiated band ends at the 5 kHz band's upper edge (5623 Hz), and spectrum.csv and
 // budget.csv end at 5 kHz.
 TEST(SimulateCli, PlateTyreOnAGivenCoarseGridCarriesTheBandTo5kHzBySubSteps) {

@@ -59,7 +59,7 @@ TEST(RollingSettings, GridForTheBandIsTheLeastEvenCountThatCarriesIt) {
     // One step per cell then suffices.
     EXPECT_EQ(substeps_for_band(5000.0, kCircumference / n, speed), 1) << speed;
   }
-  // The counts the README and the cases quote (30, 50, 80, 130 km/h): the least even counts are
+  // The counts docs/physics/contact.md and the cases quote (30, 50, 80, 130 km/h): the least even counts are
   // 2708, 1626, 1016 and 626, rounded up to 2730 = 2·3·5·7·13, 1638 = 2·3²·7·13, 1024 = 2¹⁰ and
   // 630 = 2·3²·5·7.
   EXPECT_EQ(circumferential_points_for_band(5000.0, kCircumference, 8.3333), 2730);

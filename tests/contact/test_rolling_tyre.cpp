@@ -166,7 +166,7 @@ TEST(RollingTyre, NonlinearTreadWithExponentOneIsTheWinklerTread) {
 TEST(RollingTyre, NonlinearTreadNewtonEqualsKinsol) {
   // The same run with the steady state and each step solved by Newton over contact sets with FFT
   // products (the default) and by the KINSOL reference: both solve each problem to round-off, so
-  // the runs agree to the conditioning of the steps (README: forces within 1e-8).
+  // the runs agree to the conditioning of the steps (forces within 1e-8).
   const KroppPlate plate(small_plate(0.1));
   const TyreGrid grid = small_grid();
   const double speed = 22.2;

@@ -231,7 +231,7 @@ TEST(HornEffect, DeformedMeshShowsTheHornAmplification) {
   for (double f : {500.0, 1000.0, 2000.0, 3000.0}) {
     const HornResult& r = horn("deformed", deformed_spec(10.0), f);
     record("deformed", f, r);
-    // The undeformed figures beside them (README, "The horn").
+    // The undeformed figures beside them (docs/physics/radiation.md, "The horn").
     record("graded", f, horn("graded", graded_spec(10.0), f));
     for (Eigen::Index i = 0; i < nr; ++i) {
       const auto u = static_cast<std::size_t>(i);

@@ -9,7 +9,7 @@
 //  - a tone between anchors (4050 Hz, at the 80 km/h rate): the anchors' transfers interpolated
 //    as the stage does (TransferTable). How far that interpolation is from a direct solve at
 //    4050 Hz is recorded, not asserted: on this coarse mesh −3.2 … +0.8 dB (measured), and up
-//    to 2 dB for single tones on the run's mesh (README, "Validation of the radiation").
+//    to 2 dB for single tones on the run's mesh (docs/validation.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
