@@ -9,7 +9,6 @@ HistoryKind parse_history_kind(const std::string& name) {
   if (name == "auto") return HistoryKind::automatic;
   if (name == "direct") return HistoryKind::direct;
   if (name == "modal") return HistoryKind::modal;
-  if (name == "fft") return HistoryKind::fft;
   throw std::invalid_argument("unknown history engine \"" + name + "\"");
 }
 
@@ -18,7 +17,6 @@ std::string to_string(HistoryKind kind) {
     case HistoryKind::automatic: return "auto";
     case HistoryKind::direct: return "direct";
     case HistoryKind::modal: return "modal";
-    case HistoryKind::fft: return "fft";
   }
   return "?";
 }
@@ -32,7 +30,6 @@ std::unique_ptr<HistoryEngine> make_history_engine(HistoryKind kind,
     case HistoryKind::direct:
       return std::make_unique<DirectHistoryEngine>(std::move(kernel), steps, preload);
     case HistoryKind::modal:
-    case HistoryKind::fft:
       break;
   }
   throw InputError("", "[rolling] history",

@@ -3,7 +3,7 @@
 // all earlier forces (the paper's eq. 3), including the pre-history: a constant preload force
 // for all t < 0, so that a run starts in static equilibrium (MODEL.md §2).
 //
-// `direct` is the reference; faster engines (modal, fft) plug in behind the same interface and
+// `direct` is the reference; faster engines (modal) plug in behind the same interface and
 // must agree with it to ~1e-9 relative.
 #include <memory>
 #include <string>
@@ -15,7 +15,7 @@
 
 namespace rollnoise {
 
-enum class HistoryKind { automatic, direct, modal, fft };
+enum class HistoryKind { automatic, direct, modal };
 
 HistoryKind parse_history_kind(const std::string& name);
 std::string to_string(HistoryKind kind);

@@ -21,7 +21,7 @@ RollingSettings read_rolling_settings(const ConfigTable& rolling) {
   s.time_step = rolling.positive("time_step");
   s.static_load = rolling.non_negative("static_load");
   s.history = parse_history_kind(
-      rolling.choice("history", {"auto", "direct", "modal", "fft"}, "auto"));
+      rolling.choice("history", {"auto", "direct", "modal"}, "auto"));
   s.discretisation =
       parse_discretisation(rolling.choice("discretisation", {"step", "rectangle"}, "step"));
   rolling.reject_unknown_keys();
@@ -45,7 +45,7 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   s.speed = rolling.positive("speed");
   s.duration = rolling.positive("duration");
   s.static_load = rolling.positive("static_load");
-  s.history = parse_history_kind(rolling.choice("history", {"auto", "direct", "modal", "fft"}, "auto"));
+  s.history = parse_history_kind(rolling.choice("history", {"auto", "direct", "modal"}, "auto"));
   if (rolling.contains("points_circumferential")) {
     s.points_circumferential = static_cast<int>(rolling.integer("points_circumferential", 512, 8, 1 << 16));
     if (s.points_circumferential % 2 != 0) rolling.fail("points_circumferential", "must be even");

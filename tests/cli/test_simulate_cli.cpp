@@ -797,6 +797,10 @@ const std::vector<BadInput>& bad_inputs() {
       {.name = "history_unknown",
        .edits = {{"rolling", "history", "\"bogus\""}},
        .expect = {kCase, "[rolling] history", "allowed", "\"direct\""}},
+      // No engine of that name exists: refused as unknown at once, not by every model later.
+      {.name = "history_fft_unknown",
+       .edits = {{"rolling", "history", "\"fft\""}},
+       .expect = {kCase, "[rolling] history", "unknown value \"fft\"", "\"modal\""}},
       {.name = "history_modal_not_for_point_models",
        .edits = {{"rolling", "history", "\"modal\""}},
        .expect = {kCase, "[rolling] history", "modal", "allowed"}},
