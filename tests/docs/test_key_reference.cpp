@@ -15,10 +15,13 @@
 // table, before the road is generated or the contact solved (a tyre's [road] is read last, after
 // the tyre's modes are set up on a 1 ms run: about 0.1 s). The whole file takes about 4 s.
 #include <algorithm>
+#include <atomic>
 #include <map>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -143,12 +146,35 @@ std::vector<std::string> ask(const Probe& probe) {
   return listed;
 }
 
-// Each probe asked once, whichever test needs it first.
+// Each probe is asked once, whichever test needs it first (a std::map's elements stay put).
+std::mutex answers_mutex;
+std::map<std::string, std::vector<std::string>> answered;
+
+// Asks those of `probes` not asked yet, four at a time (each is a short process).
+void ask_all(const std::vector<Probe>& probes) {
+  std::vector<const Probe*> todo;
+  {
+    const std::lock_guard<std::mutex> lock(answers_mutex);
+    for (const Probe& p : probes)
+      if (!answered.count(p.name)) todo.push_back(&p);
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&] {
+      for (std::size_t i; (i = next++) < todo.size();) {
+        std::vector<std::string> listed = ask(*todo[i]);
+        const std::lock_guard<std::mutex> lock(answers_mutex);
+        answered.emplace(todo[i]->name, std::move(listed));
+      }
+    });
+  for (std::thread& t : threads) t.join();
+}
+
 const std::vector<std::string>& answer(const Probe& probe) {
-  static std::map<std::string, std::vector<std::string>> answers;
-  auto it = answers.find(probe.name);
-  if (it == answers.end()) it = answers.emplace(probe.name, ask(probe)).first;
-  return it->second;
+  ask_all({probe});
+  const std::lock_guard<std::mutex> lock(answers_mutex);
+  return answered.at(probe.name);
 }
 
 std::string source(const std::string& relative) { return (docs_test::source_dir() / relative).string(); }
@@ -370,6 +396,7 @@ std::string compare(const std::string& page_name, const std::vector<Heading>& he
 }
 
 std::string check_page(const std::string& page_name, const std::vector<Probe>& probes, bool every_table) {
+  ask_all(probes);
   std::vector<std::pair<const Probe*, std::vector<std::string>>> answers;
   for (const Probe& p : probes)
     if (p.page == page_name) answers.emplace_back(&p, answer(p));
@@ -506,6 +533,7 @@ TEST(KeyReference, StudyFilesDocumentTheStudyReader) {
 // and every key a case reader takes for [rolling], [radiation] and [output] can be set by a
 // study, except those study-files.md lists under "Keys a study cannot set" (and only those).
 TEST(KeyReference, StudiesKnowTheKeysTheCaseReadersTake) {
+  ask_all(case_probes());
   std::map<std::string, std::set<std::string>> readers;  // section -> keys some case reader lists
   for (const Probe& p : case_probes())
     if (!p.section.empty())
