@@ -105,6 +105,33 @@ std::vector<std::string> toml_files_in(const fs::path& folder) {
   return names;
 }
 
+// Lays `overrides` over `base`: values replace values, tables are merged key by key, except a
+// table that names another `type` than the base's (a different tread, say), which replaces the
+// base's whole table, whose other keys would mean nothing to the new type. Keys that stay from
+// `base` are recorded as coming from `base_source`.
+void overlay_table(toml::table& base, const toml::table& overrides, const std::string& path,
+                   const std::string& base_source, Provenance& provenance) {
+  for (const auto& [k, node] : overrides) {
+    toml::node* below = base.get(k.str());
+    const toml::table* over_table = node.as_table();
+    toml::table* base_table = below ? below->as_table() : nullptr;
+    const bool same_type = over_table && base_table &&
+                           (!over_table->contains("type") || !base_table->contains("type") ||
+                            (*over_table)["type"].value<std::string>() == (*base_table)["type"].value<std::string>());
+    if (over_table && base_table && same_type)
+      overlay_table(*base_table, *over_table, path + "." + std::string(k.str()), base_source, provenance);
+    else
+      base.insert_or_assign(k.str(), node);
+  }
+  for (const auto& [k, node] : base) {
+    const std::string dotted = path + "." + std::string(k.str());
+    if (!overrides.contains(k.str())) provenance[dotted] = base_source;
+    // A table kept from the base whose keys were not overridden came whole from the base.
+    if (const toml::table* kept = node.as_table(); kept && !overrides.contains(k.str()))
+      for (const auto& [inner, unused] : *kept) provenance[dotted + "." + std::string(inner.str())] = base_source;
+  }
+}
+
 }  // namespace
 
 void CaseFile::merge_library_file(const std::string& section, const std::string& key,
@@ -149,13 +176,10 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
   }
   toml::table library = parse_toml_file(file_path);
   outside_->note(where, key_source, named, found);
-  // Keys beside `key` override the library file's.
-  for (auto& [k, node] : *table) {
-    if (k.str() != key) library.insert_or_assign(k.str(), node);
-  }
-  for (const auto& [k, node] : library) {
-    if (!table->contains(k.str())) (*provenance_)[section + "." + std::string(k.str())] = file_path.string();
-  }
+  // Keys beside `key` override the library file's, key by key also inside tables such as
+  // [tyre.tread] (so `--set tyre.tread.stiffness_per_area=…` keeps the file's tread type).
+  table->erase(key);
+  overlay_table(library, *table, section, file_path.string(), *provenance_);
   root_.insert_or_assign(section, std::move(library));
 }
 
