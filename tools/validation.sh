@@ -90,8 +90,11 @@ set ylabel 'LpA, CPX (energy mean of front and rear), dB(A)'
 set key outside right
 set title '205/55 R16 plate tyre, 80 km/h, 3200 N, 0.2 s, on each library surface'
 surfaces = system("awk -F, 'NR > 1 && $2 == 80 && !seen[$1]++ { printf \"%s \", $1 }' spectra.csv")
-plot for [s in surfaces] 'spectra.csv' using (strcol(1) eq s && $2 == 80 ? $3 : 1/0):4 \
-       with linespoints pt 7 ps 0.6 title s
+set yrange [50:110]
+# More surfaces than the default palette has colours: the ninth and later dashed.
+dash(i) = i > 8 ? 2 : 1
+plot for [i=1:words(surfaces)] 'spectra.csv' using (strcol(1) eq word(surfaces, i) && $2 == 80 ? $3 : 1/0):4 \
+       with linespoints lc i dt dash(i) pt 7 ps 0.6 title word(surfaces, i)
 GP
 if command -v gnuplot > /dev/null; then (cd "$out" && gnuplot cpx_spectra_surfaces.gp); fi
 cat "$out/validation_table.md"
