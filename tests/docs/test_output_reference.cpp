@@ -4,6 +4,7 @@
 // in that verb's section of the page. Per-point and per-receiver names are matched in the
 // documented form: force_1 as force_i, cpx_front.wav as <receiver>.wav, a study's varied key
 // column as <key>, a cache entry's digest as <key>.
+// Cost: 18-20 s wall, 10 s CPU for the eight tests (2026-11-27, 2 cores shared, load average 6-8).
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
