@@ -3,7 +3,9 @@
 // it does not know, `zz_probe`, fails with exit status 2 and a message that lists the allowed
 // keys (core/config_table.cpp: every key a reader looked up). Each listed key must be documented
 // under the heading of that configuration in docs/reference/, and each key documented there must
-// be accepted by some configuration the heading covers.
+// be accepted by some configuration the heading covers. Likewise the values of every key that
+// takes one of a list (from an unknown value), the models, treads and road types that make the
+// configurations, what `rollnoise calibrate` fits, and what `rollnoise study` knows.
 //
 // The pages' convention (stated at the end of case-files.md): a key is the first cell of a table
 // row, in backticks (| `speed` | m/s | ...); the rows belong to the nearest heading above them.
@@ -14,7 +16,7 @@
 // Every probe fails before any heavy work: the readers reject unknown keys as they read their
 // table, before the road is generated or the contact solved (a tyre's [road] is read last, after
 // the tyre's modes are set up on a 1 ms run: about 0.1 s); they run four at a time. On 2 cores
-// (AMD EPYC) under a load of 6-8, 2026-11-27: 3.4-4.7 s for the 7 tests in one process, 5.5 s
+// (AMD EPYC) under a load of 6-8, 2026-11-27: 3.4-4.7 s for the 8 tests in one process, 6-7 s
 // run one test per process as ctest does.
 #include <algorithm>
 #include <atomic>
@@ -44,6 +46,7 @@ struct Row {
   std::string key;
   bool library_file = false;
   std::size_t line = 0;
+  std::vector<std::string> cells;  // all of them, the key's first
 };
 
 struct Heading {
@@ -87,7 +90,14 @@ std::vector<Heading> read_page(const std::string& text) {
     if (open == std::string::npos) continue;  // a header or separator row
     const auto close = cell.find('`', open + 1);
     if (close == std::string::npos) continue;
-    headings.back().rows.push_back({cell.substr(open + 1, close - open - 1), contains(cell, "(library file)"), n});
+    Row row{cell.substr(open + 1, close - open - 1), contains(cell, "(library file)"), n, {}};
+    for (std::size_t from = 1; from < t.size();) {
+      std::size_t to = from;
+      while (to < t.size() && !(t[to] == '|' && t[to - 1] != '\\')) ++to;
+      row.cells.push_back(trim(t.substr(from, to - from)));
+      from = to + 1;
+    }
+    headings.back().rows.push_back(std::move(row));
   }
   return headings;
 }
@@ -434,6 +444,103 @@ TEST(KeyReference, TheComparisonFindsMissingAndStaleKeys) {
 TEST(KeyReference, CaseFilesDocumentEveryKeyTheReadersAccept) {
   const std::string problems = check_page("case-files.md", case_probes(), true);
   EXPECT_EQ(problems, "") << "docs/reference/case-files.md and the readers disagree:\n" << problems;
+}
+
+// The quoted values in backticks in `text`: `"auto"` gives auto.
+std::set<std::string> quoted_values(const std::string& text) {
+  static const std::regex value("`\"([^\"`]*)\"`");
+  std::set<std::string> values;
+  for (auto m = std::sregex_iterator(text.begin(), text.end(), value); m != std::sregex_iterator(); ++m)
+    values.insert((*m)[1].str());
+  return values;
+}
+
+// A key whose value is one of a list: the program lists the values for an unknown one.
+struct ValueProbe {
+  Probe probe;      // asks for the list
+  std::string key;  // whose row documents them
+};
+
+ValueProbe values_of(const std::string& section, const std::string& key, std::string heading, std::string case_text,
+                     bool by_set = true) {
+  ValueProbe v;
+  const std::string where = "[" + section + "] " + key;
+  v.key = key;
+  v.probe.name = "values of " + where + " under " + heading;
+  v.probe.page = "case-files.md";
+  v.probe.headings = {std::move(heading)};
+  v.probe.files["case.toml"] = std::move(case_text);
+  v.probe.args = {"simulate", "case.toml", "--out", "out"};
+  if (by_set) {
+    v.probe.args.push_back("--set");
+    v.probe.args.push_back(section + "." + key + "=zz_probe");
+  }
+  v.probe.marker = where + ": unknown value \"zz_probe\"; allowed values are ";
+  return v;
+}
+
+// Every value of every key that takes one of a list is in that key's row (as `"value"`), and
+// every value its "allowed values" cell names is one the program takes.
+TEST(KeyReference, CaseFilesDocumentTheValuesOfEveryChoice) {
+  const std::string flat = "type = \"flat\"\n";
+  const std::string plate = "file = " + quoted(source("models/tyres/passenger_205_55R16.toml")) + "\n";
+  std::vector<ValueProbe> probes = {
+      values_of("tyre", "model", "[tyre]", point_case(flat)),
+      values_of("tyre", "side_condition", "model = \"two_layer\"",
+                tyre_case(flat, "file = " + quoted(source("models/tyres/passenger_205_55R16_two_layer.toml")))),
+      values_of("tyre.tread", "type", "[tyre.tread]", tyre_case(flat, plate + "[tyre.tread]\ntype = \"zz_probe\"\n"),
+                false),
+      values_of("road", "type", "[road]", point_case(flat)),
+      values_of("road", "type", "[road]", tyre_case(flat)),
+      values_of("road", "class", "type = \"iso8608\"", point_case("type = \"iso8608\"\nclass = \"A\"\n")),
+      values_of("road", "texture", "type = \"aggregate\"", point_case("type = \"aggregate\"\nmax_chip_size = 0.01\n")),
+      values_of("road", "anisotropy", "type = \"texture\"",
+                tyre_case("type = \"texture\"\nwavelengths = [0.01]\nlevels = [40.0]\n")),
+      values_of("road", "spikes", "type = \"file\"", point_case("type = \"file\"\nfile = \"profile.csv\"\n")),
+      values_of("rolling", "history", "Point models", point_case(flat)),
+      values_of("rolling", "discretisation", "Point models", point_case(flat)),
+      values_of("rolling", "history", "Tyre models", tyre_case(flat)),
+      values_of("rolling", "road_sampling", "Tyre models", tyre_case(flat)),
+      values_of("radiation", "geometry", "[radiation]", tyre_case(flat)),
+      values_of("output", "fields", "[output]", tyre_case(flat)),
+  };
+  // The standard receivers, from an unknown name.
+  ValueProbe receivers = values_of("radiation", "receivers", "[radiation]", tyre_case(flat));
+  receivers.probe.args.back() = "radiation.receivers=[\"zz_probe\"]";
+  receivers.probe.marker = "unknown receiver \"zz_probe\"; allowed names are ";
+  probes.push_back(receivers);
+  std::vector<Probe> asked;
+  for (const ValueProbe& v : probes) asked.push_back(v.probe);
+  ask_all(asked);
+  const auto& headings = page("case-files.md");
+  std::ostringstream problems;
+  for (const ValueProbe& v : probes) {
+    const std::vector<std::string>& listed = answer(v.probe);
+    std::vector<const Row*> rows;
+    for (const Heading& h : headings)
+      if (h.text == v.probe.headings.front())
+        for (const Row& r : h.rows)
+          if (r.key == v.key) rows.push_back(&r);
+    if (rows.size() != 1) {
+      problems << "`" << v.key << "` has " << rows.size() << " rows under \"" << v.probe.headings.front() << "\"\n";
+      continue;
+    }
+    std::string text;
+    for (const std::string& cell : rows.front()->cells) text += cell + " | ";
+    const std::set<std::string> in_row = quoted_values(text);
+    for (const std::string& value : listed)
+      if (!in_row.count(value))
+        problems << "case-files.md:" << rows.front()->line << ": `" << v.key << "` does not name the value \"" << value
+                 << "\" (" << v.probe.name << ")\n";
+    const std::set<std::string> allowed_cell =
+        rows.front()->cells.size() > 3 ? quoted_values(rows.front()->cells[3]) : std::set<std::string>{};
+    for (const std::string& value : allowed_cell)
+      if (std::find(listed.begin(), listed.end(), value) == listed.end())
+        problems << "case-files.md:" << rows.front()->line << ": `" << v.key << "` allows \"" << value
+                 << "\", which the program does not take (" << v.probe.name << ")\n";
+  }
+  EXPECT_EQ(problems.str(), "") << "the allowed values in docs/reference/case-files.md and the readers disagree:\n"
+                                << problems.str();
 }
 
 // The configurations the probes cover are all there are: a new tyre model, tread type or road
