@@ -677,6 +677,16 @@ TEST(SimulateCli, UnknownVerbIsBadInput) {
   EXPECT_FALSE(r.err.empty());
 }
 
+// Each --set takes one value: the case file after it is the case, not another override.
+TEST(SimulateCli, CaseFileAfterSetIsTheCase) {
+  Workspace ws;
+  ws.write("sdof.toml", project_case());
+  const RunResult r = ws.run({"simulate", "--set", "rolling.static_load=3", "sdof.toml", "--out", "out"});
+  EXPECT_EQ(r.status, 0) << describe(r);
+  const auto summary = nlohmann::json::parse(read_text(ws.path("out/summary.json")));
+  EXPECT_DOUBLE_EQ(summary["settings"]["static_load_N"].get<double>(), 3.0) << summary["settings"];
+}
+
 TEST(SimulateCli, SimulateWithoutCaseIsBadInput) {
   Workspace ws;
   const RunResult r = ws.run({"simulate"});

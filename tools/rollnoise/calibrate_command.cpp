@@ -338,7 +338,8 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
                   "foundation_stiffness, foundation_loss_factor; transducer_mass). Default: sdof all, plate "
                   "tension_x, bending_x, foundation_stiffness, loss_factor; two_layer belt_youngs_modulus_x/y, "
                   "tension_x/y, foundation_stiffness, tread_youngs_modulus and the three loss factors")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->allow_extra_args(false);
   cmd->add_option("--out", options.out,
                   "Output folder (default out/<model name>_calibrated); written atomically, an earlier rollnoise "
                   "output there is replaced");

@@ -228,7 +228,8 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
   cmd->add_option("--distances", options.distances,
                   "Response points, m along the circumference on the centre line from the excitation at the belt "
                   "centre, comma separated (default: 0, 0.05, 0.1, 0.2, 0.5 for a tyre; the points of a point model)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->allow_extra_args(false);
   cmd->add_flag("--force", options.force,
                 "Run even when the estimate of the tables' memory or output (--frequencies × --distances) "
                 "exceeds what the machine has");

@@ -191,7 +191,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
                   "recognised by its content")
       ->required();
   cmd->add_option("--out", options.out, "Output folder (default out/<input name>); written atomically");
-  cmd->add_option("--set", options.overrides, "Override a key of the road: road.KEY=VALUE, value as TOML (TOML input only). Repeatable");
+  cmd->add_option("--set", options.overrides, "Override a key of the road: road.KEY=VALUE, value as TOML (TOML input only). Repeatable")
+      ->allow_extra_args(false);  // one value per --set, so an input file after it stays the input
   cmd->add_option("--length", options.length, "Length of a generated road to analyse, m (default 7: bands to 500 mm)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--spacing", options.spacing, "Sample spacing of a generated road, m (default 0.0002)")

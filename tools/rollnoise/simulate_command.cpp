@@ -27,7 +27,8 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
                   "atomically, an earlier rollnoise output there is replaced");
   cmd->add_option("--set", options.overrides,
                   "Override a case value: section.key=value (value as TOML; bare words are strings). Repeatable")
-      ->type_name("KEY=VALUE");
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);  // one value per --set, so a case file after it stays the case
   add_cache_options(*cmd, options.cache, options.no_cache);
   cmd->add_flag("--force", options.force,
                 "Run even when the estimate of the run's memory or output exceeds what the machine has");
