@@ -145,6 +145,25 @@ TEST(RoadCli, BadInputIsOneMessageAndExitStatusTwo) {
   }
 }
 
+// A number option out of range: one short line naming the option and the bound (CLI11's own
+// check printed its range as 0 to 1.8e308 written out in full).
+TEST(RoadCli, NumberOptionOutOfRangeNamesTheOptionAndTheBound) {
+  for (const auto& [value, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"-1", "--length: must be > 0 (got -1)"},
+           {"0", "--length: must be > 0 (got 0)"},
+           {"inf", "--length: must be a finite number > 0 (got inf)"},
+           {"nan", "--length: must be a finite number > 0 (got nan)"}}) {
+    Workspace ws;
+    ws.write("r.toml", "[road]\ntype = \"iso8608\"\nclass = \"C\"\n");
+    const RunResult r = ws.run({"road", "r.toml", "--out", "out", "--length", value});
+    EXPECT_EQ(r.status, 2) << describe(r);
+    EXPECT_TRUE(contains(r.err, expected)) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_LT(r.err.size(), 200u) << r.err;
+    EXPECT_FALSE(fs::exists(ws.path("out")));
+  }
+}
+
 TEST(RoadCli, Help) {
   Workspace ws;
   const RunResult r = ws.run({"road", "--help"});

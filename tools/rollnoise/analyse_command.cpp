@@ -15,6 +15,7 @@
 #include "core/output_directory.hpp"
 #include "core/uff58.hpp"
 #include "simulation/sound_report.hpp"
+#include "number_checks.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -102,7 +103,7 @@ CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& options) {
       ->required();
   cmd->add_option("--full-scale", options.full_scale,
                   "Pressure in Pa of a WAV sample value of 1.0 (default: from the WAV's comment, as rollnoise writes it)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--out", options.out, "Output folder (default out/<file name>); written atomically");
   cmd->footer("Example:\n  rollnoise analyse recording.wav --full-scale 20 --out out/recording");
   return cmd;

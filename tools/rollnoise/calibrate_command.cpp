@@ -26,6 +26,7 @@
 #include "core/output_directory.hpp"
 #include "core/progress.hpp"
 #include "simulation/run_size.hpp"
+#include "number_checks.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -358,7 +359,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--transducer-mass", options.transducer_mass,
                   "Mass (kg) of the transducer at each response point (mass loading); the starting value when "
                   "transducer_mass is fitted (default 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--frequency-range", options.frequency_range,
                   "LO:HI in Hz: fit only these lines (within the model's valid range; two_layer solves exactly "
                   "the modes that resonate below 2 HI, HI 500 Hz by default, at most 2000 Hz)");
@@ -372,11 +373,11 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
                   "Frequency continuation: fit the lines up to this frequency (Hz) first, then up to twice it, and "
                   "so on to the whole band, each stage from the last one's result (default: the model's choice, "
                   "twice the lowest resonance for two_layer, none for the others; 0: the whole band at once)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--loss-scale", options.loss_scale,
                   "Scale of the Cauchy loss on the log residual (default 0.25, about 2 dB or 14 degrees): lines far "
                   "beyond it (outliers) weigh less")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--force", options.force,
                 "Run even when the estimate of the fit's memory or output (its measured lines) exceeds what the "
                 "machine has");

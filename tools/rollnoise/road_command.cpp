@@ -26,6 +26,7 @@
 #include "road/road_surface.hpp"
 #include "road/texture_spectrum.hpp"
 #include "simulation/run_size.hpp"
+#include "number_checks.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -194,13 +195,13 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
   cmd->add_option("--set", options.overrides, "Override a key of the road: road.KEY=VALUE, value as TOML (TOML input only). Repeatable")
       ->allow_extra_args(false);  // one value per --set, so an input file after it stays the input
   cmd->add_option("--length", options.length, "Length of a generated road to analyse, m (default 7: bands to 500 mm)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--spacing", options.spacing, "Sample spacing of a generated road, m (default 0.0002)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--lines", options.lines, "Lateral lines of a generated road (default 1, the centre line)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--width", options.width, "Width over which the lines are spread, m (default 0.16)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--force", options.force,
                 "Generate the road even when the estimate of its memory or output (--length / --spacing "
                 "× --lines) exceeds what the machine has");
