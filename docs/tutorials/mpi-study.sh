@@ -9,6 +9,12 @@ if ! command -v mpirun >/dev/null 2>&1; then
   echo "mpi-study: skipped: mpirun not found (OpenMPI: sudo apt-get install openmpi-bin libopenmpi-dev, as tools/setup.sh does, then rebuild)"
   exit 0
 fi
+# A program built without MPI would run as two independent copies of the whole study, both
+# writing the same folder.
+if ! ldd "$ROLLNOISE" 2>/dev/null | grep -q 'libmpi'; then
+  echo "mpi-study: skipped: $ROLLNOISE is not built with MPI (install libopenmpi-dev openmpi-bin, then rebuild: bash tools/setup.sh)"
+  exit 0
+fi
 # OpenMPI refuses to run as root (a container, CI) unless told that it is meant.
 if [[ $(id -u) -eq 0 ]]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
