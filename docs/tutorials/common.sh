@@ -12,13 +12,18 @@
 #              band to 1 kHz, a coarse radiation mesh), one calibration start and a shorter
 #              band, and a study file with the same settings added to its [set] table. The
 #              outputs have the same files and columns; the numbers are not the page's.
-# A relative ROLLNOISE or OUT is taken from the folder the script was started in.
+# A relative ROLLNOISE or OUT is taken from the folder the script was started in; a ROLLNOISE
+# without a slash is looked up on the PATH.
 set -euo pipefail
 
 tutorial_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tutorial_caller=$PWD
 ROLLNOISE=${ROLLNOISE:-$tutorial_root/build/tools/rollnoise/rollnoise}
-[[ $ROLLNOISE == /* ]] || ROLLNOISE=$tutorial_caller/$ROLLNOISE
+if [[ $ROLLNOISE != */* ]]; then
+  ROLLNOISE=$(command -v "$ROLLNOISE" || echo "$ROLLNOISE")   # a name on the PATH
+elif [[ $ROLLNOISE != /* ]]; then
+  ROLLNOISE=$tutorial_caller/$ROLLNOISE
+fi
 if [[ -n ${OUT:-} ]]; then
   [[ $OUT == /* ]] || OUT=$tutorial_caller/$OUT
 else
