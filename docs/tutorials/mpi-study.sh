@@ -9,8 +9,7 @@ if ! command -v mpirun >/dev/null 2>&1; then
   echo "mpi-study: skipped: mpirun not found (OpenMPI: sudo apt-get install openmpi-bin libopenmpi-dev, as tools/setup.sh does, then rebuild)"
   exit 0
 fi
-# A program built without MPI would run as two independent copies of the whole study, both
-# writing the same folder.
+# A program built without MPI refuses to run under mpirun -n 2 (exit status 2): skip, saying why.
 if ! ldd "$ROLLNOISE" 2>/dev/null | grep -q 'libmpi'; then
   echo "mpi-study: skipped: $ROLLNOISE is not built with MPI (install libopenmpi-dev openmpi-bin, then rebuild: bash tools/setup.sh)"
   exit 0

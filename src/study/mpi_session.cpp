@@ -1,6 +1,9 @@
 #include "study/mpi_session.hpp"
 
 #include <cstdlib>
+#include <string>
+
+#include "core/error.hpp"
 
 #ifdef ROLLNOISE_HAVE_MPI
 #include <mpi.h>
@@ -18,6 +21,25 @@ bool launched_by_mpirun() {
 
 }  // namespace
 
+int ranks_from_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    const char* value = std::getenv(name);
+    if (!value) continue;
+    char* end = nullptr;
+    const long ranks = std::strtol(value, &end, 10);
+    if (end != value && *end == '\0' && ranks >= 1 && ranks <= 1 << 24) return static_cast<int>(ranks);
+  }
+  return 1;
+}
+
+std::string mpi_launch_problem(bool built_with_mpi, int launched_ranks) {
+  if (built_with_mpi || launched_ranks <= 1) return "";
+  return "this rollnoise was built without MPI (libopenmpi-dev was missing when it was built, or "
+         "-DROLLNOISE_MPI=OFF), so each of the " + std::to_string(launched_ranks) +
+         " ranks would run the whole study into the same folder; rebuild with MPI (bash tools/setup.sh "
+         "installs it), or run without mpirun (--threads N uses the cores of one machine)";
+}
+
 bool MpiSession::built_with_mpi() noexcept {
 #ifdef ROLLNOISE_HAVE_MPI
   return true;
@@ -27,6 +49,8 @@ bool MpiSession::built_with_mpi() noexcept {
 }
 
 MpiSession::MpiSession() {
+  if (const std::string problem = mpi_launch_problem(built_with_mpi(), ranks_from_launcher()); !problem.empty())
+    throw InputError("command line", "mpirun", problem);
 #ifdef ROLLNOISE_HAVE_MPI
   if (!launched_by_mpirun()) return;
   int provided = 0;

@@ -7,8 +7,16 @@
 
 namespace rollnoise {
 
+// The ranks a launcher (mpirun, srun with PMI) says this process is one of: 1 when none did.
+int ranks_from_launcher();
+
+// Why a process cannot run as one of `launched_ranks` ranks ("" when it can): a build without
+// MPI under `mpirun -n N` would run N whole copies of a study into one folder.
+std::string mpi_launch_problem(bool built_with_mpi, int launched_ranks);
+
 class MpiSession {
  public:
+  // InputError when launched as several ranks by a build without MPI (mpi_launch_problem).
   MpiSession();
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_workspace.hpp"
+#include "study/mpi_session.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -77,6 +78,24 @@ std::string results_without_wall_times(const fs::path& file) {
 std::vector<std::string> case_ids() {
   return {"surface-dac11_speed-22.222", "surface-dac11_speed-30.556", "surface-sma11_speed-22.222",
           "surface-sma11_speed-30.556"};
+}
+
+// A build without MPI under `mpirun -n N` would run the whole study N times into one folder:
+// refused (every rank says why); one rank, or a build with MPI, runs.
+TEST(StudyCli, MpirunWithoutMpiIsRefused) {
+  EXPECT_EQ(rollnoise::mpi_launch_problem(true, 4), "");
+  EXPECT_EQ(rollnoise::mpi_launch_problem(false, 1), "");
+  const std::string problem = rollnoise::mpi_launch_problem(false, 2);
+  EXPECT_NE(problem.find("built without MPI"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("2 ranks"), std::string::npos) << problem;
+  ::setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
+  EXPECT_EQ(rollnoise::ranks_from_launcher(), 3);
+  ::setenv("OMPI_COMM_WORLD_SIZE", "x3", 1);
+  EXPECT_EQ(rollnoise::ranks_from_launcher(), 1) << "not a number: no launcher";
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  if (!std::getenv("PMI_SIZE")) {
+    EXPECT_EQ(rollnoise::ranks_from_launcher(), 1);
+  }
 }
 
 TEST(StudyCli, SameResultsWithOneThreadTwoThreadsAndTwoMpiRanks) {
