@@ -187,7 +187,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       "summary.json, road.png and texture.png (with their gnuplot scripts).");
   cmd->add_option("input", options.input,
                   "A TOML file with a [road] table (a case), a surface file (models/surfaces/NAME.toml), or a "
-                  "profile file: CSV (x,z or x,z_1,...), HDF5 height map or a laser profilometer export, "
+                  "profile file: CSV (x,z or x,z_1,...), HDF5 height map, a laser profilometer export or line "
+                  "laser profiles (CSV line pairs), "
                   "recognised by its content")
       ->required();
   cmd->add_option("--out", options.out, "Output folder (default out/<input name>); written atomically");
@@ -206,7 +207,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
   cmd->footer(
       "Examples:\n"
       "  rollnoise road models/surfaces/dac11.toml --out out/dac11\n"
-      "  rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat");
+      "  rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat\n"
+      "  rollnoise road data/surfaces/captif-transverse/20231114_cpx_demo.csv");
   return cmd;
 }
 
