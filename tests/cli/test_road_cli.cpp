@@ -51,6 +51,28 @@ TEST(RoadCli, MeasuredLaserProfileIsRecognisedTrimmedAndAnalysed) {
   EXPECT_EQ(count_lines(read_text(ws.path("captif") / "road.csv")), 48229u);
 }
 
+TEST(RoadCli, LineLaserProfilesAreRecognisedAsNineLines) {
+  // The CAPTIF transverse profiles (data/surfaces/captif-transverse, issue 26): nine line pairs
+  // of 656 points, analysed as nine lines (tests/road checks the MPD against a second
+  // implementation: 0.478 mm).
+  Workspace ws;
+  const std::string file = (source_dir / "data" / "surfaces" / "captif-transverse" / "20231114_cpx_demo.csv").string();
+  const RunResult r = ws.run({"road", file, "--out", "fine"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  const nlohmann::json s = read_json(ws.path("fine") / "summary.json");
+  EXPECT_EQ(s["settings"]["lines"].get<int>(), 9);
+  EXPECT_EQ(s["settings"]["samples_per_line"].get<int>(), 656);
+  EXPECT_NEAR(s["mpd_m"].get<double>(), 0.478e-3, 0.005e-3);
+  // As a 1-D road it is refused: nine lines, one message naming the file, exit status 2.
+  ws.write("r.toml", "[road]\ntype = \"file\"\nfile = \"" + file + "\"\n");
+  const RunResult bad = ws.run({"road", "r.toml", "--out", "out"});
+  EXPECT_EQ(bad.status, 2) << describe(bad);
+  EXPECT_TRUE(contains(bad.err, "20231114_cpx_demo.csv")) << bad.err;
+  EXPECT_TRUE(contains(bad.err, "holds 9 height lines")) << bad.err;
+  EXPECT_EQ(count_lines(bad.err), 1u) << bad.err;
+  EXPECT_FALSE(fs::exists(ws.path("out")));
+}
+
 TEST(RoadCli, EveryLibrarySurfaceIsGeneratedAndAnalysed) {
   Workspace ws;
   for (const char* name : {"dac11", "sma11", "sma8", "pa16", "thin6", "chipseal", "iso10844", "eacc", "tined"}) {
