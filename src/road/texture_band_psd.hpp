@@ -56,6 +56,8 @@ class TextureBandPsd {
   // two of these, clipped at 0: the cells along nx then sum to the line density exactly,
   // however coarse the grid is in ny (texture_tiles.hpp).
   double isotropic_line_cumulative(double nx, double ny) const;
+  // The band edges where G changes (cycles/m), increasing.
+  const std::vector<double>& edges() const noexcept { return edge_n_; }
   // The largest wavenumber where S is not 0: the highest band edge (cycles/m).
   double highest_wavenumber() const noexcept { return edge_n_.back(); }
 

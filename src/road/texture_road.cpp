@@ -20,7 +20,7 @@
 #include "road/spectral_synthesis.hpp"
 #include "road/texture_band_psd.hpp"
 #include "road/texture_spectrum.hpp"
-#include "road/texture_tiles.hpp"
+#include "road/texture_waves.hpp"
 
 namespace rollnoise {
 namespace {
@@ -154,10 +154,15 @@ namespace {
 // is at least 8 longest wavelengths (else 8 longest wavelengths, cut to last + 1 samples): the
 // record [0, last·spacing] is one period (sample `last` repeats sample 0), so its periodogram is
 // the target in every band, for every seed.
-std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed) {
+// The period (samples) of a road whose record ends at sample `last`.
+std::size_t texture_period(const TextureScales& s, double last) {
   const double needed = std::max(last, std::ceil(8.0 * s.longest / s.spacing));
   synthesis_grid_size(needed, needed);
-  const auto n = static_cast<std::size_t>(needed);
+  return static_cast<std::size_t>(needed);
+}
+
+std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed) {
+  const std::size_t n = texture_period(s, last);
   const double period = s.spacing * static_cast<double>(n);
   std::vector<double> r = synthesise_periodic_profile(
       n, s.spacing, seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); },
@@ -241,13 +246,11 @@ double texture_sample_spacing(const TextureRoadSpec& spec) {
 }
 
 std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec& spec) {
-  CheckedSurface c = check_surface(spec);
+  const CheckedSurface c = check_surface(spec);
   if (spec.anisotropy != TextureRoadSpec::Anisotropy::isotropic) return make_line_surface(spec, c);
-  const double h = c.scales.spacing;
-  const TextureTileLayout layout = texture_tile_layout(h, c.scales.longest, spec.width);
-  // The strip the tyre reads, and a line beyond for the interpolation (within the width's period).
-  const auto half_lines = std::min(static_cast<std::size_t>(std::ceil(spec.half_width / h)) + 1, (layout.n_y - 1) / 2);
-  return std::make_unique<TiledTextureSurface>(std::move(c.psd), layout, spec.seed, half_lines, c.scales.lead_in);
+  const double last = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / c.scales.spacing));
+  return std::make_unique<TextureWaveSurface>(c.psd, c.scales.spacing, texture_period(c.scales, last), spec.seed,
+                                              c.scales.lead_in);
 }
 
 std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec) {
@@ -270,11 +273,10 @@ std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec
         samples[i * y_count + j] = line->height(h * static_cast<double>(i), h * (static_cast<double>(j) - static_cast<double>(half_y)));
     return std::make_unique<SampledSurface>("texture", h, x_count, y_count, std::move(samples));
   }
-  const TextureTileLayout layout = texture_tile_layout(h, c.scales.longest, spec.width);
-  const TiledTextureSurface tiles(c.psd, layout, spec.seed, std::min(half_y, (layout.n_y - 1) / 2), c.scales.lead_in);
-  for (std::size_t i = 0; i < x_count; ++i)
-    for (std::size_t j = 0; j < y_count; ++j)
-      samples[i * y_count + j] = tiles.sample(i, static_cast<long>(j) - static_cast<long>(half_y));
+  const TextureWaveSurface waves(c.psd, h, texture_period(c.scales, last_x), spec.seed, c.scales.lead_in);
+  for (std::size_t j = 0; j < y_count; ++j)
+    for (std::size_t i = 0; i < x_count; ++i)
+      samples[i * y_count + j] = waves.sample(i, static_cast<long>(j) - static_cast<long>(half_y));
   return std::make_unique<SampledSurface>("texture", h, x_count, y_count, std::move(samples));
 }
 

@@ -21,10 +21,9 @@
 // profile missed bands of 30 to 60 spectral lines by up to ±2.5 dB, a chi-square with 2M degrees
 // of freedom). A window (the Hann window of texture_spectrum) mixes neighbouring lines and still
 // scatters a band of M lines by about 0.97/sqrt(M) (relative); a shorter piece of the profile
-// scatters as any random profile of that length. An isotropic surface is made in tiles
-// (texture_tiles.hpp); each of its lines along x is a sum of many lateral modes, so a single
-// line's band levels scatter as a Gaussian field's, while the mean over the lines of a tile's
-// lateral period holds the target.
+// scatters as any random profile of that length. An isotropic surface is one oblique plane wave
+// per wavenumber along x, its lateral wavenumber drawn from the isotropic spectrum
+// (texture_waves.hpp): every line along x holds the target exactly, as the profile does.
 //
 // Anisotropy of a surface, precisely:
 //  - "isotropic": the 2-D density depends on |(nx, ny)| only; a line in any direction has the
@@ -37,11 +36,11 @@
 //
 // Extent: the profile covers [0, max(length, x_max)] and is periodic over it (x = 0 and the end
 // are neighbours through the wrap: nothing reads both); a run within it sees the same road
-// whatever its duration. The isotropic surface is made in tiles along the road as a tyre reaches
-// them (make_rolling_texture_surface; texture_tiles.hpp), lines |y| <= width/2 across, the same
-// road whatever the run's length and the tyre's width: its memory is that of two tiles of the
-// strip the tyre reads. The anisotropic surfaces hold one line (along x over the road, or across
-// over the width). A raised-cosine window over the first lead_in metres takes r to 0 at x = 0
+// whatever its duration. The isotropic surface has the same period along x and is made line by
+// line as it is read (make_rolling_texture_surface; texture_waves.hpp), the same road whatever
+// the tyre's width: its memory is that of the lines a tyre reads. `width` bounds |y| <= width/2
+// (the whole map, and the check against the tyre's contact grid). The anisotropic surfaces hold
+// one line (along x over the road, or across over the width). A raised-cosine window over the first lead_in metres takes r to 0 at x = 0
 // with zero slope (r = 0 for x < 0, the flat lead-in).
 #include <cstdint>
 #include <memory>
@@ -80,8 +79,7 @@ std::vector<double> checked_texture_band_centres(const TextureRoadSpec& spec);
 // All generate the road; bad parameters are InputErrors naming the bare key (the factories add
 // the file and the section). make_texture_surface holds the whole map of [0, max(length, x_max)]
 // x |y| <= width/2 (at most 2^26 points), sample for sample the road that
-// make_rolling_texture_surface makes in tiles for a tyre (|y| <= half_width), which the road
-// factory uses.
+// make_rolling_texture_surface makes line by line for a tyre, which the road factory uses.
 std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec);
 // The road's sample spacing (m): sample_spacing, or its default, after the same checks.
 double texture_sample_spacing(const TextureRoadSpec& spec);

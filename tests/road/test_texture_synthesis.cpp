@@ -1,8 +1,8 @@
 // The texture generator at any length (issue 26, §4): a 20 m profile at sub-millimetre spacing,
 // every realisation holding its spectrum (by an analysis of our own, a plain periodogram with
-// band sums over the whole profile, and by the program's, texture_spectrum), and the isotropic
-// surface made in tiles along the road (texture_tiles.hpp): the same road as the whole map, joined
-// without a jump, of the target spectrum, at a cost that does not grow with the run.
+// band sums over the whole profile, and by the program's, texture_spectrum), the same for every
+// line of an isotropic surface (texture_waves.hpp), whose lines are as correlated across the road
+// as along it (isotropy), and which is made line by line as it is read.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,7 +23,7 @@
 #include "road/sampled_road.hpp"
 #include "road/texture_road.hpp"
 #include "road/texture_spectrum.hpp"
-#include "road/texture_tiles.hpp"
+#include "road/texture_waves.hpp"
 #include "road_generator_helpers.hpp"
 
 namespace rollnoise {
@@ -104,22 +104,22 @@ TEST(TextureSynthesis, TwentyMetresAtAQuarterMillimetreIsGeneratedInAMomentWithM
   EXPECT_EQ(p.samples().size(), 80001u);
   EXPECT_EQ(p.spacing(), 0.25e-3);
   std::printf("  20 m at 0.25 mm (bands 0.63-200 mm): %zu samples, generated in %.3f s\n", p.samples().size(), seconds);
-  // The 2-D road for a tyre (a strip 0.2 m wide of a 0.3 m surface) at 0.25 mm: made in tiles as
-  // it is read, not refused; its first 20 m read along the centre line.
+  // The 2-D road for a tyre (a strip 0.2 m wide of a 0.3 m surface) at 0.25 mm: made line by
+  // line as it is read, not refused; 20 m of its centre line read, then 41 lines across the strip
+  // (every 5 mm: a tyre's contact grid) at one point each.
   const auto surface = test::surface_from(table(t, "sample_spacing = 0.00025\nwidth = 0.3\nseed = 1"), 20.0, 0.1);
   const auto t0 = std::chrono::steady_clock::now();
   double sum = 0.0;
   for (std::size_t i = 0; i <= 80000; ++i) sum += surface->height(0.25e-3 * static_cast<double>(i), 0.0);
-  const double surface_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto& tiled = dynamic_cast<const TiledTextureSurface&>(*surface);
-  const double tile_x = static_cast<double>(tiled.layout().n_x) * 0.25e-3;
-  const double tile_y = static_cast<double>(tiled.layout().n_y) * 0.25e-3;
-  std::printf("  2-D strip |y| <= 0.1 m, 20 m read at 0.25 mm: %.2f s; tiles of %zu x %zu points (%.2f m x %.3f m),"
-              " mean height %.3g m\n",
-              surface_seconds, tiled.layout().n_x, tiled.layout().n_y, tile_x, tile_y, sum / 80001.0);
-  // A tile is 16 longest wavelengths (224 mm) and 2 more of overlap; across, the width and 2.
-  EXPECT_LE(tile_x, 18.0 * 0.2245 * 1.25);
-  EXPECT_LE(tile_y, (0.3 + 2.0 * 0.2245) * 1.25);
+  const double line_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (int j = -20; j <= 20; ++j) sum += surface->height(10.0, 0.005 * j);
+  const double strip_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto& waves = dynamic_cast<const TextureWaveSurface&>(*surface);
+  std::printf("  2-D surface at 0.25 mm: period %zu samples (%.2f m); the centre line read in %.2f s, and 41 lines "
+              "across the strip in %.2f s (mean height %.3g m)\n",
+              waves.samples(), 0.25e-3 * static_cast<double>(waves.samples()), line_seconds, strip_seconds,
+              sum / 80042.0);
+  EXPECT_EQ(waves.samples(), 80000u);  // the road's length: memory of one line per line read
 }
 
 TEST(TextureSynthesis, EveryRealisationHoldsItsSpectrum) {
@@ -187,40 +187,73 @@ TEST(TextureSynthesis, EveryRealisationHoldsItsSpectrum) {
   EXPECT_EQ(reported, t.nominal.size());  // 0.5 mm (edge 0.446 mm >= 2 x 0.2 mm) to 200 mm (224 mm <= 20 m / 12)
 }
 
-// The factory's rolling surface: the whole map's road in tiles, sample for sample, however many
-// lines it keeps; joined without a jump; with the target spectrum along x over many tiles.
-TEST(TextureSynthesis, RollingSurfaceIsTheMapInTiles) {
+// Every line of an isotropic surface holds the target, per realisation; the factory's surface
+// is the whole map's road, sample for sample.
+TEST(TextureSynthesis, EveryLineOfASurfaceHoldsItsSpectrum) {
+  const Target t = dense_asphalt_like(2.5e-3, 0.1);
+  double worst = 0.0;
+  for (int seed = 1; seed <= 4; ++seed) {
+    const std::string keys =
+        table(t, "sample_spacing = 0.0005\nwidth = 0.3\nlength = 10.0\nlead_in = 0.0\nseed = " + std::to_string(seed));
+    const auto surface = test::surface_from(keys, 10.0, 0.15);
+    const auto& waves = dynamic_cast<const TextureWaveSurface&>(*surface);
+    ASSERT_EQ(waves.samples(), 20000u);
+    for (long j : {-300L, -71L, 0L, 13L, 300L}) {  // y from -0.15 to +0.15 m
+      std::vector<double> z(waves.samples());
+      for (std::size_t i = 0; i < z.size(); ++i) z[i] = waves.sample(i, j);
+      const std::vector<OwnBand> own = own_band_levels(z, 0.5e-3, t.nominal);
+      for (std::size_t b = 0; b < t.nominal.size(); ++b) {
+        const double m = static_cast<double>(own[b].lines);
+        EXPECT_NEAR(own[b].level_db, t.levels[b], 10.0 * std::log10(1.0 + 1.0 / m))
+            << "seed " << seed << ", line " << j << ", band " << t.nominal[b];
+        worst = std::max(worst, std::abs(own[b].level_db - t.levels[b]));
+      }
+    }
+    if (seed == 1) {
+      toml::table doc = toml::parse("[road]\n" + keys);
+      const ConfigTable road(*doc["road"].as_table(), "case.toml", "road");
+      TextureRoadSpec spec;
+      read_texture_keys(road, spec, true, 20.0);
+      spec.length = 1.0;  // a map of the first metre: the same period is asked with x_max
+      spec.x_max = 10.0;
+      const auto map = make_texture_surface(spec);
+      const long half_y = static_cast<long>((map->y_count() - 1) / 2);
+      for (std::size_t i = 0; i < 2000; i += 7)
+        for (long j = -half_y; j <= half_y; j += 11)
+          ASSERT_EQ(waves.sample(i, j), map->sample(i, static_cast<std::size_t>(j + half_y))) << i << ", " << j;
+      EXPECT_NEAR(surface->height(0.01234, 0.0101), map->height(0.01234, 0.0101), 1e-15);
+    }
+  }
+  std::printf("  5 lines x 4 seeds, 10 m at 0.5 mm, bands 2.5-100 mm: own periodogram max |error| %.4f dB\n", worst);
+}
+
+// Isotropy: two lines a distance d apart are as correlated as two points d apart along a line.
+TEST(TextureSynthesis, LinesAreAsCorrelatedAcrossAsAlong) {
   const Target t = dense_asphalt_like(2.5e-3, 0.05);
-  const std::string keys = table(t, "sample_spacing = 0.0005\nwidth = 0.1\nlength = 3.0\nseed = 3\n");
-  toml::table doc = toml::parse("[road]\n" + keys);
-  const ConfigTable road(*doc["road"].as_table(), "case.toml", "road");
-  TextureRoadSpec spec;
-  read_texture_keys(road, spec, true, 20.0);
-  spec.half_width = 0.02;
-  const auto map = make_texture_surface(spec);
-  const auto rolling = make_rolling_texture_surface(spec);
-  const auto& tiles = dynamic_cast<const TiledTextureSurface&>(*rolling);
-  const std::size_t core = tiles.layout().core;
-  std::printf("  tile: %zu + %zu samples along, %zu across; map %zu x %zu\n", core, tiles.layout().overlap,
-              tiles.layout().n_y, map->x_count(), map->y_count());
-  ASSERT_GT(map->x_count(), 3 * core);  // the map spans several tiles
-  // The strip (|y| <= 20 mm and a line beyond) is the map's middle lines, to the last bit.
-  const long strip = static_cast<long>(std::ceil(0.02 / 0.0005)) + 1;
-  const long half_y = static_cast<long>((map->y_count() - 1) / 2);
-  for (std::size_t i = 0; i < map->x_count(); i += 7)
-    for (long j = -strip; j <= strip; ++j)
-      ASSERT_EQ(tiles.sample(i, j), map->sample(i, static_cast<std::size_t>(j + half_y))) << i << ", " << j;
-  // Between samples: bilinear, as the map.
-  for (double x : {0.0123, 1.00049, 2.5}) EXPECT_NEAR(rolling->height(x, 0.0101), map->height(x, 0.0101), 1e-15);
-  // No jump at the tiles' joins: the step between neighbours there is no larger than the road's
-  // steps elsewhere (rms step over the map's centre line, times 5).
-  const std::vector<double> centre = map->column(static_cast<std::size_t>(half_y));
-  double rms_step = 0.0;
-  for (std::size_t i = 1; i < centre.size(); ++i) rms_step += std::pow(centre[i] - centre[i - 1], 2);
-  rms_step = std::sqrt(rms_step / static_cast<double>(centre.size() - 1));
-  for (std::size_t k = 1; k * core < centre.size(); ++k) {
-    for (std::size_t i = k * core - 2; i <= k * core + tiles.layout().overlap && i + 1 < centre.size(); ++i)
-      EXPECT_LT(std::abs(centre[i + 1] - centre[i]), 5.0 * rms_step) << "join " << k << ", sample " << i;
+  for (const long lag : {4L, 10L, 20L}) {  // 2, 5 and 10 mm at 0.5 mm
+    double across = 0.0, along = 0.0;
+    for (int seed = 1; seed <= 8; ++seed) {
+      const auto surface = test::surface_from(
+          table(t, "sample_spacing = 0.0005\nwidth = 0.1\nlength = 10.0\nlead_in = 0.0\nseed = " + std::to_string(seed)),
+          10.0, 0.05);
+      const auto& waves = dynamic_cast<const TextureWaveSurface&>(*surface);
+      const std::size_t n = waves.samples();
+      double var = 0.0, c_y = 0.0, c_x = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double z = waves.sample(i, 0);
+        var += z * z;
+        c_y += z * waves.sample(i, lag);
+        c_x += z * waves.sample((i + static_cast<std::size_t>(lag)) % n, 0);  // one period: wrap
+      }
+      across += c_y / var / 8.0;
+      along += c_x / var / 8.0;
+    }
+    std::printf("  lag %4.1f mm: correlation across %.3f, along %.3f (mean of 8 seeds)\n", 0.5 * static_cast<double>(lag),
+                across, along);
+    // Along x every realisation has the target spectrum, so its correlation is the target's;
+    // across, each band's waves give the mean of cos(2 pi k d) over its lateral wavenumbers, a
+    // sample of about 1/sqrt(M) (M waves in a band; here hundreds) of the isotropic value.
+    EXPECT_NEAR(across, along, 0.05) << "lag " << lag;
   }
 }
 
