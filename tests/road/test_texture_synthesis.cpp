@@ -285,3 +285,37 @@ TEST(TextureSynthesis, LongRunOfAWideBandSurfaceIsAcceptedAndHoldsItsSpectrum) {
 
 }  // namespace
 }  // namespace rollnoise
+
+namespace rollnoise {
+namespace {
+
+// The closed-form line integral of the isotropic density (texture_band_psd.hpp) against the
+// line density (its total, the Abel relation) and against a quadrature of the density itself.
+TEST(TextureSynthesis, LineIntegralOfTheIsotropicDensityIsExact) {
+  const Target t = dense_asphalt_like(2.5e-3, 0.05);
+  std::vector<double> centres;
+  for (double w : t.nominal) centres.push_back(texture_band_centre_wavelength(w));
+  const TextureBandPsd psd(centres, t.levels);
+  for (double w : {3e-3, 7e-3, 14e-3, 30e-3, 45e-3}) {
+    const double n = 1.0 / w;
+    // Over k >= 0 the integral is half the two-sided line density G/2.
+    EXPECT_NEAR(psd.isotropic_line_cumulative(n, 1e6) / (psd.line_density(n) / 4.0), 1.0, 1e-12) << w;
+    EXPECT_EQ(psd.isotropic_line_cumulative(n, -40.0), -psd.isotropic_line_cumulative(n, 40.0));
+    // Between two band-edge crossings the density is smooth: midpoint rule with 20,000 steps.
+    const double e1 = psd.edges()[3], e2 = psd.edges()[4];
+    if (e1 <= n) continue;
+    const double k1 = std::sqrt(e1 * e1 - n * n), k2 = std::sqrt(e2 * e2 - n * n);
+    double sum = 0.0;
+    const int steps = 20000;
+    const double dk = (k2 - k1) / steps;
+    for (int i = 0; i < steps; ++i) {
+      const double q = std::hypot(n, k1 + (i + 0.5) * dk);
+      sum += psd.isotropic_density(q * (1.0 - 1e-9), q * (1.0 + 1e-9)) * dk;
+    }
+    const double exact = psd.isotropic_line_cumulative(n, k2) - psd.isotropic_line_cumulative(n, k1);
+    EXPECT_NEAR(sum / exact, 1.0, 1e-3) << w;
+  }
+}
+
+}  // namespace
+}  // namespace rollnoise
