@@ -54,7 +54,7 @@ class TextureBandPsd {
   // closed form -(1/(2 pi)) Σ_e dG_e asin(min(|ny|, b_e) / b_e) sign(ny); over all ny it gives
   // G(|nx|)/2 (the Abel transform). A synthesis grid cell [ny1, ny2] at nx holds the difference of
   // two of these, clipped at 0: the cells along nx then sum to the line density exactly,
-  // however coarse the grid is in ny (texture_tiles.hpp).
+  // however coarse the grid is in ny; texture_waves.hpp draws lateral wavenumbers from them.
   double isotropic_line_cumulative(double nx, double ny) const;
   // The band edges where G changes (cycles/m), increasing.
   const std::vector<double>& edges() const noexcept { return edge_n_; }
