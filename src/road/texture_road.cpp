@@ -149,18 +149,18 @@ TextureScales check_scales(const TextureRoadSpec& spec, const TextureBandPsd& ps
 
 namespace {
 
-// Samples 0 .. last of a profile with the band levels (spacing s.spacing, seed), fixed amplitudes
-// and random phases (SynthesisAmplitudes::fixed) on a period of exactly `last` samples when that
-// is at least 8 longest wavelengths (else 8 longest wavelengths, cut to last + 1 samples): the
-// record [0, last·spacing] is one period (sample `last` repeats sample 0), so its periodogram is
-// the target in every band, for every seed.
-// The period (samples) of a road whose record ends at sample `last`.
+// The period (samples) of a road whose record ends at sample `last`: `last` itself when that is
+// at least 8 longest wavelengths (enough lines in the longest band), else 8 longest wavelengths.
 std::size_t texture_period(const TextureScales& s, double last) {
   const double needed = std::max(last, std::ceil(8.0 * s.longest / s.spacing));
   synthesis_grid_size(needed, needed);
   return static_cast<std::size_t>(needed);
 }
 
+// Samples 0 .. last of a profile with the band levels (spacing s.spacing, seed), fixed amplitudes
+// and random phases (SynthesisAmplitudes::fixed) on the period texture_period(): when that is
+// `last`, the record [0, last·spacing] is one period (sample `last` repeats sample 0), so its
+// periodogram is the target in every band, for every seed; else the period is cut to last + 1.
 std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed) {
   const std::size_t n = texture_period(s, last);
   const double period = s.spacing * static_cast<double>(n);
@@ -262,7 +262,7 @@ std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec
   const std::size_t y_count = 2 * half_y + 1;
   if (!(static_cast<double>(x_count) * static_cast<double>(y_count) <= static_cast<double>(max_synthesis_points))) {
     throw_bad("sample_spacing", "the map of " + format_number(static_cast<double>(x_count) * static_cast<double>(y_count)) +
-                                    " points is more than the limit of 2^26; a tyre run reads it in tiles, but a whole "
+                                    " points is more than the limit of 2^26; a tyre run reads the road line by line, but a whole "
                                     "map must fit: use a larger sample_spacing or a shorter length (or a smaller width)");
   }
   std::vector<double> samples(x_count * y_count);
