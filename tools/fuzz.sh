@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-all=(case_file model_file csv profile_csv laser height_map_hdf5 frf_csv uff wav modal_table_hdf5 study_file)
+all=(case_file model_file csv profile_csv laser line_laser height_map_hdf5 frf_csv uff wav modal_table_hdf5 study_file)
 targets=("$@")
 if ((${#targets[@]} == 0)); then targets=("${all[@]}"); fi
 

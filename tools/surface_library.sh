@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The surface library at a glance (issue 9): runs `rollnoise road` on every surface of
-# models/surfaces/ and on the two measured CAPTIF profiles, and writes
+# models/surfaces/ and on the measured CAPTIF profiles (the chip seal's two longitudinal records and
+# the fine asphalt's nine transverse lines), and writes
 # out/surface_library/{library.csv, texture_spectra.csv, texture_spectra.gp, texture_spectra.png}:
 # MPD and the texture levels at 5, 10, 20, 40 and 80 mm per surface, and all spectra in one
 # figure. Needs a built tree (bash tools/setup.sh).
@@ -16,10 +17,12 @@ done
 for station in 0 1; do
   "$rollnoise" road "data/surfaces/captif/20211011_aylesbury_dec_station_$station.dat" --out "$out/captif_$station"
 done
+# The measured fine dense asphalt (nine 200 mm transverse lines: bands up to 12.5 mm).
+"$rollnoise" road data/surfaces/captif-transverse/20231114_cpx_demo.csv --out "$out/captif_transverse"
 # texture.csv of each into one long table, and the library table.
 echo "surface,wavelength_m,Ltx_dB" > "$out/texture_spectra.csv.tmp"
 echo "surface,mpd_mm,Ltx_5mm_dB,Ltx_10mm_dB,Ltx_20mm_dB,Ltx_40mm_dB,Ltx_80mm_dB" > "$out/library.csv.tmp"
-for name in "${surfaces[@]}" captif_0 captif_1; do
+for name in "${surfaces[@]}" captif_0 captif_1 captif_transverse; do
   awk -F, -v s="$name" 'NR > 1 { print s "," $1 "," $2 }' "$out/$name/texture.csv" >> "$out/texture_spectra.csv.tmp"
   mpd=$(awk -F': ' '/^  "mpd_m"/ { gsub(/,/, "", $2); printf "%.2f", $2 * 1000 }' "$out/$name/summary.json")
   level() { awk -F, -v w="$1" 'NR > 1 && ($1 - w) ^ 2 < 1e-12 { printf "%.1f", $2 }' "$out/$name/texture.csv"; }
@@ -41,7 +44,7 @@ set xlabel 'texture wavelength (mm)'
 set ylabel 'L_tx (dB re 1 um)'
 set key outside right
 surfaces = 'dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined'
-measured = 'captif_0 captif_1'
+measured = 'captif_0 captif_1 captif_transverse'
 plot for [s in surfaces] 'texture_spectra.csv' using (strcol(1) eq s ? $2*1000 : 1/0):3 \
        with linespoints pt 7 ps 0.6 title s, \
      for [s in measured] 'texture_spectra.csv' using (strcol(1) eq s ? $2*1000 : 1/0):3 \

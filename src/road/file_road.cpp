@@ -24,12 +24,13 @@ FileRoad::Rows read_profile(const std::filesystem::path& path, SpikeHandling spi
                      "with columns x and z; use type = \"surface\" with a tyre model for a height map");
   }
   if (format != ProfileFormat::csv) {
-    // The laser profilometer export (and anything unknown, which this rejects): the loader
-    // cleans on its uniform grid.
+    // The laser profilometer export, line laser pairs (and anything unknown, which this
+    // rejects): the loader cleans on its uniform grid.
     LoadedProfile loaded = load_profile_file(path);
     if (loaded.z_lines.size() != 1) {
       throw InputError(source, "", "holds " + std::to_string(loaded.z_lines.size()) +
-                                       " height lines; a 1-D profile (type = \"file\") takes one");
+                                       " height lines; a 1-D profile (type = \"file\") takes one (`rollnoise "
+                                       "road` on the file writes them as columns z_1, z_2, ... of road.csv)");
     }
     return {std::move(loaded.x), std::move(loaded.z_lines.front()), loaded.dropouts, loaded.spikes};
   }

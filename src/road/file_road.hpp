@@ -1,7 +1,7 @@
 #pragma once
 // A measured or externally made profile, read from a profile CSV file (profile_csv.hpp: columns
-// x and z, in m or with a unit such as x_mm, z [mm]; one height line) or a laser profilometer
-// export, interpolated linearly between its rows: that linear interpolation is how the profile
+// x and z, in m or with a unit such as x_mm, z [mm]; one height line), a laser profilometer
+// export or a line laser file of one profile (line_laser_csv.hpp), interpolated linearly between its rows: that linear interpolation is how the profile
 // is resampled to the contact grid of a run.
 //
 // Cleaning (ISO 13473-1, line_cleaning.hpp): when x is evenly spaced (profile_file.hpp's

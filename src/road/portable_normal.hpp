@@ -29,4 +29,13 @@ inline std::pair<double, double> standard_normal_pair(std::mt19937_64& engine) {
   return {radius * std::cos(angle), radius * std::sin(angle)};
 }
 
+// A phase uniform on [0, 2π) as (cos, sin), from the same two engine draws as
+// standard_normal_pair (whose direction it is), so that a generator can switch between complex
+// normal and fixed-modulus amplitudes without changing the draws that follow.
+inline std::pair<double, double> random_phasor(std::mt19937_64& engine) {
+  (void)engine();  // the radius's draw of standard_normal_pair
+  const double angle = 2.0 * std::numbers::pi * (static_cast<double>(engine() >> 11) * 0x1.0p-53);
+  return {std::cos(angle), std::sin(angle)};
+}
+
 }  // namespace rollnoise::portable

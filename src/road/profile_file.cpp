@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "road/height_map_hdf5.hpp"
 #include "road/laser_profile.hpp"
+#include "road/line_laser_csv.hpp"
 #include "road/line_cleaning.hpp"
 #include "road/profile_csv.hpp"
 #include "road/profile_format.hpp"
@@ -116,10 +117,23 @@ LoadedProfile load_profile_file(const std::filesystem::path& path) {
       out.spikes = laser.spikes;
       return out;
     }
+    case ProfileFormat::line_laser: {
+      LineLaserProfiles lines = read_line_laser_csv(path);
+      // x from 0 at the first position, as for the laser profilometer (the file's positions are
+      // the sensor's, centred on it: a road's x starts at 0, and x < 0 is the flat lead-in).
+      const double first = lines.x_m.front();
+      for (double& x : lines.x_m) x -= first;
+      // The lines' order is the file's; their distance apart is unknown: y is the index.
+      std::vector<double> y(lines.z_lines.size());
+      for (std::size_t j = 0; j < y.size(); ++j) y[j] = static_cast<double>(j);
+      out = make_uniform_profile(lines.x_m, lines.z_lines, std::move(y), source);
+      break;
+    }
     case ProfileFormat::unknown:
       throw InputError(source, "",
                        "is not a profile file this program reads: a profile CSV (columns x and z, or "
-                       "x and z_1, z_2, ...), an HDF5 height map (/x, /y, /z) or a laser profilometer export");
+                       "x and z_1, z_2, ...), an HDF5 height map (/x, /y, /z), a laser profilometer export "
+                       "or line laser profiles (CSV line pairs: time stamp and positions, time stamp and heights)");
   }
   for (std::size_t line = 0; line < out.z_lines.size(); ++line) {
     const std::string where = out.z_lines.size() == 1 ? source : source + " (line " + std::to_string(line + 1) + ")";

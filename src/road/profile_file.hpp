@@ -6,7 +6,10 @@
 // Formats: a profile CSV (profile_csv.hpp: x,z or x,z_1..z_n with a y line); an HDF5 height
 // map (height_map_hdf5.hpp: each y grid line becomes one height line along x); a laser
 // profilometer export (laser_profile.hpp: read, trimmed of its reference plates and cleaned by
-// read_laser_profile; x = i * spacing from the first sample kept).
+// read_laser_profile; x = i * spacing from the first sample kept); line laser profiles in CSV
+// line pairs (line_laser_csv.hpp: each pair one line, z_1 … z_n in the file's order, x the
+// positions along the laser line less the first one, so from 0; y = 0, 1, 2, … the line's
+// index: the file does not say how far apart the lines lie).
 //
 // Uniform spacing: x is uniform when every interval is within 1e-6 (relative) of the mean
 // interval; then x is replaced by x_0 + i * spacing (a change below 1e-6 of the spacing).

@@ -6,11 +6,13 @@
 #include "core/error.hpp"
 #include "core/hdf5_reader.hpp"
 #include "road/laser_profile.hpp"
+#include "road/line_laser_csv.hpp"
 
 namespace rollnoise {
 namespace {
 
-constexpr std::size_t head_bytes = 64 * 1024;
+// Enough for the first line of a line laser file of some thousands of positions.
+constexpr std::size_t head_bytes = 1024 * 1024;
 
 bool looks_like_text(std::string_view head) {
   if (head.empty()) return false;
@@ -31,6 +33,7 @@ std::string_view to_string(ProfileFormat format) {
     case ProfileFormat::csv: return "csv";
     case ProfileFormat::hdf5: return "hdf5";
     case ProfileFormat::laser: return "laser profilometer";
+    case ProfileFormat::line_laser: return "line laser csv";
     case ProfileFormat::unknown: break;
   }
   return "unknown";
@@ -48,6 +51,7 @@ ProfileFormat detect_profile_format(const std::filesystem::path& path) {
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (has_hdf5_signature(path)) return ProfileFormat::hdf5;
   if (looks_like_laser_profile(head)) return ProfileFormat::laser;
+  if (looks_like_line_laser_csv(head)) return ProfileFormat::line_laser;
   if (looks_like_text(head)) return ProfileFormat::csv;
   return ProfileFormat::unknown;
 }

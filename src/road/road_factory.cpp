@@ -91,8 +91,8 @@ std::unique_ptr<RoadProfile> make_aggregate(const ConfigTable& road, double x_ma
 std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
   const std::string name = road.text("file");
   if (name.empty()) {
-    road.fail("file", "must name a profile file (a CSV with columns x,z in m, or x_mm,z_mm; or a laser "
-                      "profilometer export)");
+    road.fail("file", "must name a profile file (a CSV with columns x,z in m, or x_mm,z_mm; a laser "
+                      "profilometer export; or a line laser file of one profile)");
   }
   // ISO 13473-1 spike removal suits measured texture; a made-up profile's steep steps are meant.
   const SpikeHandling spikes =

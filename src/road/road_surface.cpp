@@ -62,7 +62,7 @@ std::unique_ptr<RoadSurface> make_texture_map(const ConfigTable& road, double x_
   spec.x_max = x_max;
   spec.half_width = half_width;
   road.reject_unknown_keys();
-  return build_named(road, [&] { return make_texture_surface(spec); });
+  return build_named(road, [&] { return make_rolling_texture_surface(spec); });
 }
 
 std::unique_ptr<RoadSurface> make_aggregate_map(const ConfigTable& road, double x_max, double half_width) {

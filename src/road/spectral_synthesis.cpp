@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <new>
+#include <numbers>
 #include <random>
 
 #include <fftw3.h>
@@ -33,7 +34,8 @@ std::size_t synthesis_grid_size(double needed, double needed_total) {
 }
 
 std::vector<double> synthesise_periodic_profile(std::size_t n, double spacing, std::uint64_t seed,
-                                                const std::function<double(double)>& amplitude) {
+                                                const std::function<double(double)>& amplitude,
+                                                SynthesisAmplitudes kind) {
   std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
   std::unique_ptr<double[], FftwFree> grid(fftw_alloc_real(n));
   if (!spectrum || !grid) throw std::bad_alloc();
@@ -46,8 +48,10 @@ std::vector<double> synthesise_periodic_profile(std::size_t n, double spacing, s
   const double period = spacing * static_cast<double>(n);
   std::mt19937_64 engine(seed);
   for (std::size_t m = 1; 2 * m < n; ++m) {
-    const auto [re, im] = portable::standard_normal_pair(engine);
-    const double a = amplitude(static_cast<double>(m) / period);
+    const auto [re, im] = kind == SynthesisAmplitudes::gaussian ? portable::standard_normal_pair(engine)
+                                                                 : portable::random_phasor(engine);
+    const double a = (kind == SynthesisAmplitudes::gaussian ? 1.0 : std::numbers::sqrt2) *
+                     amplitude(static_cast<double>(m) / period);
     spectrum[m][0] = a * re;
     spectrum[m][1] = a * im;
   }

@@ -27,6 +27,16 @@ inline double lead_in_window(double x, double lead_in) {
   return 0.5 * (1.0 - std::cos(std::numbers::pi * x / lead_in));
 }
 
+// How each Fourier coefficient's random value is drawn.
+//  - gaussian: a complex normal (real and imaginary parts normal, standard deviation A): a
+//    Gaussian field whose spectrum is the target only in expectation; a band of M modes
+//    scatters as a chi-square with 2M degrees of freedom (about ±4.3/sqrt(M) dB).
+//  - fixed: modulus sqrt(2)·A (the complex normal's rms) and a uniform random phase: the
+//    "spectral representation" of Shinozuka & Deodatis (Appl. Mech. Rev. 44 (1991) 191-204,
+//    eq. 45 ff.), whose every realisation holds the target spectrum exactly over one period
+//    (its periodogram is the target), and whose heights are Gaussian in the limit of many modes.
+enum class SynthesisAmplitudes { gaussian, fixed };
+
 // Largest synthesis grid the generators accept, in points (2^26: 0.5 GiB for one work array).
 inline constexpr std::size_t max_synthesis_points = std::size_t{1} << 26;
 
@@ -49,7 +59,8 @@ inline double spectral_amplitude_2d(double two_sided_density, double period_x, d
 // normal; the mean and the Nyquist mode of an even n are 0. Each mode draws its pair of normals
 // in order of m, whatever the amplitude, so the draws do not depend on the spectrum.
 std::vector<double> synthesise_periodic_profile(std::size_t n, double spacing, std::uint64_t seed,
-                                                const std::function<double(double)>& amplitude);
+                                                const std::function<double(double)>& amplitude,
+                                                SynthesisAmplitudes kind = SynthesisAmplitudes::gaussian);
 
 // Fills `data`, an FFTW in-place real-to-complex array of n0 rows of 2 (n1/2 + 1) doubles
 // (allocated with fftw_alloc_real), with one period of a 2-D field: row i (x = i·spacing_x, any

@@ -70,4 +70,18 @@ double TextureBandPsd::isotropic_density(double q_low, double q_high) const {
   return std::max(0.0, s);
 }
 
+double TextureBandPsd::isotropic_line_cumulative(double nx, double ny) const {
+  nx = std::abs(nx);
+  const double t = std::abs(ny);
+  double sum = 0.0;
+  for (std::size_t k = edge_n_.size(); k-- > 0;) {
+    const double e = edge_n_[k];
+    if (e <= nx) break;  // edges are increasing: none above nx remains
+    const double b = std::sqrt((e - nx) * (e + nx));
+    sum += step_[k] * (t >= b ? std::numbers::pi / 2.0 : std::asin(t / b));
+  }
+  const double value = -sum / (2.0 * std::numbers::pi);
+  return ny < 0.0 ? -value : value;
+}
+
 }  // namespace rollnoise

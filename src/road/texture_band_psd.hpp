@@ -49,6 +49,18 @@ class TextureBandPsd {
   // (cycles/m, 0 <= q_low < q_high), clipped at 0.
   double isotropic_density(double q_low, double q_high) const;
 
+  // The integral of the unclipped S along a line of constant nx: ∫_0^ny S(sqrt(nx^2 + t^2)) dt
+  // (m^2 per cycle/m; odd in ny). With b_e = sqrt(e^2 - nx^2) for each edge e > |nx|, it is in
+  // closed form -(1/(2 pi)) Σ_e dG_e asin(min(|ny|, b_e) / b_e) sign(ny); over all ny it gives
+  // G(|nx|)/2 (the Abel transform). A synthesis grid cell [ny1, ny2] at nx holds the difference of
+  // two of these, clipped at 0: the cells along nx then sum to the line density exactly,
+  // however coarse the grid is in ny; texture_waves.hpp draws lateral wavenumbers from them.
+  double isotropic_line_cumulative(double nx, double ny) const;
+  // The band edges where G changes (cycles/m), increasing.
+  const std::vector<double>& edges() const noexcept { return edge_n_; }
+  // The largest wavenumber where S is not 0: the highest band edge (cycles/m).
+  double highest_wavenumber() const noexcept { return edge_n_.back(); }
+
   // Total variance of the given bands (m^2).
   double variance() const noexcept { return variance_; }
   // The shortest and longest wavelengths of the spectrum: the outer band edges (m).

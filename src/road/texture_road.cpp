@@ -20,6 +20,7 @@
 #include "road/spectral_synthesis.hpp"
 #include "road/texture_band_psd.hpp"
 #include "road/texture_spectrum.hpp"
+#include "road/texture_waves.hpp"
 
 namespace rollnoise {
 namespace {
@@ -146,39 +147,63 @@ TextureScales check_scales(const TextureRoadSpec& spec, const TextureBandPsd& ps
 
 }  // namespace
 
-std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec) {
-  if (!std::isfinite(spec.x_max)) throw std::invalid_argument("make_texture_profile: x_max must be finite");
-  const std::vector<double> centres = checked_texture_band_centres(spec);
-  const TextureBandPsd psd(centres, spec.levels);
-  const TextureScales s = check_scales(spec, psd);
-
-  const double cover = std::max(spec.length, spec.x_max);
-  const double last = std::max(1.0, std::ceil(cover / s.spacing));
-  const double needed = std::max(last + 1.0 + std::ceil(2.0 * s.longest / s.spacing), std::ceil(8.0 * s.longest / s.spacing));
-  const std::size_t n = synthesis_grid_size(needed, needed);
-  const double period = s.spacing * static_cast<double>(n);
-  std::vector<double> r = synthesise_periodic_profile(
-      n, s.spacing, spec.seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); });
-  r.resize(static_cast<std::size_t>(last) + 1);
-  for (std::size_t j = 0; j < r.size(); ++j) r[j] *= lead_in_window(s.spacing * static_cast<double>(j), s.lead_in);
-  return std::make_unique<SampledProfile>("texture", s.spacing, std::move(r));
-}
-
 namespace {
 
-struct FftwFree {
-  void operator()(double* p) const noexcept { fftw_free(p); }
+// The period (samples) of a road whose record ends at sample `last`: `last` itself when that is
+// at least 8 longest wavelengths (enough lines in the longest band), else 8 longest wavelengths.
+std::size_t texture_period(const TextureScales& s, double last) {
+  const double needed = std::max(last, std::ceil(8.0 * s.longest / s.spacing));
+  synthesis_grid_size(needed, needed);
+  return static_cast<std::size_t>(needed);
+}
+
+// Samples 0 .. last of a profile with the band levels (spacing s.spacing, seed), fixed amplitudes
+// and random phases (SynthesisAmplitudes::fixed) on the period texture_period(): when that is
+// `last`, the record [0, last·spacing] is one period (sample `last` repeats sample 0), so its
+// periodogram is the target in every band, for every seed; else the period is cut to last + 1.
+std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed) {
+  const std::size_t n = texture_period(s, last);
+  const double period = s.spacing * static_cast<double>(n);
+  std::vector<double> r = synthesise_periodic_profile(
+      n, s.spacing, seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); },
+      SynthesisAmplitudes::fixed);
+  const auto count = static_cast<std::size_t>(last) + 1;
+  if (r.size() < count) r.push_back(r.front());  // the period's end: the first sample again
+  r.resize(count);
+  return r;
+}
+
+// A surface made of one texture line: along x (transverse tining, r = w(x) p(x)) or across
+// (longitudinal tining, r = w(x) p(y + width/2)); memory of one line.
+class TextureLineSurface final : public RoadSurface {
+ public:
+  TextureLineSurface(SampledProfile line, bool along_x, double half_width, double lead_in)
+      : line_(std::move(line)), along_x_(along_x), half_width_(half_width), lead_in_(lead_in) {}
+  std::string type() const override { return "texture"; }
+  double height(double x, double y) const override {
+    if (x < 0.0) return 0.0;
+    return lead_in_window(x, lead_in_) * (along_x_ ? line_.height(x) : line_.height(y + half_width_));
+  }
+
+ private:
+  SampledProfile line_;
+  bool along_x_;
+  double half_width_;
+  double lead_in_;
 };
 
-}  // namespace
+struct CheckedSurface {
+  TextureBandPsd psd;
+  TextureScales scales;
+};
 
-std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec) {
+CheckedSurface check_surface(const TextureRoadSpec& spec) {
   if (!std::isfinite(spec.x_max)) throw std::invalid_argument("make_texture_surface: x_max must be finite");
   if (!(spec.half_width >= 0.0) || !std::isfinite(spec.half_width)) {
     throw std::invalid_argument("make_texture_surface: half_width must be finite and >= 0");
   }
   const std::vector<double> centres = checked_texture_band_centres(spec);
-  const TextureBandPsd psd(centres, spec.levels);
+  TextureBandPsd psd(centres, spec.levels);
   const TextureScales s = check_scales(spec, psd);
   if (!(spec.width > 0.0) || !std::isfinite(spec.width)) {
     throw_bad("width", "must be a finite number > 0 (got " + format_number(spec.width) + ")");
@@ -189,53 +214,69 @@ std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec
                            format_number(spec.half_width) + " m; set width to at least " +
                            format_number(2.0 * spec.half_width) + " m");
   }
-  const double h = s.spacing;
-  const double last_x = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / h));
-  const double half_y = std::max(1.0, std::ceil(spec.width / 2.0 / h));
-  const auto x_count = static_cast<std::size_t>(last_x) + 1;
-  const auto y_count = 2 * static_cast<std::size_t>(half_y) + 1;
-  const double margin = std::ceil(2.0 * s.longest / h);
-  const double min_points = std::ceil(8.0 * s.longest / h);
-  const double needed_x = std::max(last_x + 1.0 + margin, min_points);
-  const double needed_y = std::max(2.0 * half_y + 1.0 + margin, min_points);
-  std::vector<double> samples(x_count * y_count);
+  return {std::move(psd), s};
+}
 
+// The anisotropic surfaces: one line along x over the road, or across over the width.
+std::unique_ptr<TextureLineSurface> make_line_surface(const TextureRoadSpec& spec, const CheckedSurface& c) {
+  const double h = c.scales.spacing;
+  const bool along_x = spec.anisotropy == TextureRoadSpec::Anisotropy::transverse;
+  const double half_y = std::max(1.0, std::ceil(spec.width / 2.0 / h));
+  const double last = along_x ? std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / h)) : 2.0 * half_y;
+  SampledProfile line("texture", h, texture_line(c.psd, c.scales, last, spec.seed));
+  return std::make_unique<TextureLineSurface>(std::move(line), along_x, h * half_y, c.scales.lead_in);
+}
+
+}  // namespace
+
+std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec) {
+  if (!std::isfinite(spec.x_max)) throw std::invalid_argument("make_texture_profile: x_max must be finite");
+  const std::vector<double> centres = checked_texture_band_centres(spec);
+  const TextureBandPsd psd(centres, spec.levels);
+  const TextureScales s = check_scales(spec, psd);
+  const double last = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / s.spacing));
+  std::vector<double> r = texture_line(psd, s, last, spec.seed);
+  for (std::size_t j = 0; j < r.size(); ++j) r[j] *= lead_in_window(s.spacing * static_cast<double>(j), s.lead_in);
+  return std::make_unique<SampledProfile>("texture", s.spacing, std::move(r));
+}
+
+double texture_sample_spacing(const TextureRoadSpec& spec) {
+  const std::vector<double> centres = checked_texture_band_centres(spec);
+  return check_scales(spec, TextureBandPsd(centres, spec.levels)).spacing;
+}
+
+std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec& spec) {
+  const CheckedSurface c = check_surface(spec);
+  if (spec.anisotropy != TextureRoadSpec::Anisotropy::isotropic) return make_line_surface(spec, c);
+  const double last = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / c.scales.spacing));
+  return std::make_unique<TextureWaveSurface>(c.psd, c.scales.spacing, texture_period(c.scales, last), spec.seed,
+                                              c.scales.lead_in);
+}
+
+std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec) {
+  const CheckedSurface c = check_surface(spec);
+  const double h = c.scales.spacing;
+  const double last_x = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / h));
+  const auto half_y = static_cast<std::size_t>(std::max(1.0, std::ceil(spec.width / 2.0 / h)));
+  const auto x_count = static_cast<std::size_t>(last_x) + 1;
+  const std::size_t y_count = 2 * half_y + 1;
+  if (!(static_cast<double>(x_count) * static_cast<double>(y_count) <= static_cast<double>(max_synthesis_points))) {
+    throw_bad("sample_spacing", "the map of " + format_number(static_cast<double>(x_count) * static_cast<double>(y_count)) +
+                                    " points is more than the limit of 2^26; a tyre run reads the road line by line, but a whole "
+                                    "map must fit: use a larger sample_spacing or a shorter length (or a smaller width)");
+  }
+  std::vector<double> samples(x_count * y_count);
   if (spec.anisotropy != TextureRoadSpec::Anisotropy::isotropic) {
-    // One profile with the target spectrum, along x (transverse tining) or across (longitudinal).
-    const bool along_x = spec.anisotropy == TextureRoadSpec::Anisotropy::transverse;
-    const double needed = along_x ? needed_x : needed_y;
-    const std::size_t n = synthesis_grid_size(needed, needed);
-    const double period = h * static_cast<double>(n);
-    const std::vector<double> p = synthesise_periodic_profile(
-        n, h, spec.seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); });
-    for (std::size_t i = 0; i < x_count; ++i) {
-      const double w = lead_in_window(h * static_cast<double>(i), s.lead_in);
-      for (std::size_t j = 0; j < y_count; ++j) samples[i * y_count + j] = w * (along_x ? p[i] : p[j]);
-    }
+    const auto line = make_line_surface(spec, c);
+    for (std::size_t i = 0; i < x_count; ++i)
+      for (std::size_t j = 0; j < y_count; ++j)
+        samples[i * y_count + j] = line->height(h * static_cast<double>(i), h * (static_cast<double>(j) - static_cast<double>(half_y)));
     return std::make_unique<SampledSurface>("texture", h, x_count, y_count, std::move(samples));
   }
-
-  const std::size_t n0 = synthesis_grid_size(needed_x, needed_x * needed_y);
-  const std::size_t n1 = synthesis_grid_size(needed_y, needed_x * needed_y);
-  synthesis_grid_size(1.0, static_cast<double>(n0) * static_cast<double>(n1));  // the rounded-up grid too
-  const std::size_t stride = 2 * (n1 / 2 + 1);
-  const std::unique_ptr<double[], FftwFree> data(fftw_alloc_real(n0 * stride));
-  if (!data) throw std::bad_alloc();
-  const double period_x = h * static_cast<double>(n0);
-  const double period_y = h * static_cast<double>(n1);
-  // Each grid point stands for the density averaged over a radial interval of one wavenumber
-  // step (texture_band_psd.hpp), which keeps the inverse-square-root peaks below the band edges
-  // integrable on the grid.
-  const double step = std::max(1.0 / period_x, 1.0 / period_y);
-  synthesise_periodic_surface(data.get(), n0, n1, period_x, period_y, spec.seed, [&](double nx, double ny) {
-    const double q = std::sqrt(nx * nx + ny * ny);
-    const double q_low = std::max(0.0, q - 0.5 * step);
-    return spectral_amplitude_2d(psd.isotropic_density(q_low, q_low + step), period_x, period_y);
-  });
-  for (std::size_t i = 0; i < x_count; ++i) {
-    const double w = lead_in_window(h * static_cast<double>(i), s.lead_in);
-    for (std::size_t j = 0; j < y_count; ++j) samples[i * y_count + j] = w * data[i * stride + j];
-  }
+  const TextureWaveSurface waves(c.psd, h, texture_period(c.scales, last_x), spec.seed, c.scales.lead_in);
+  for (std::size_t j = 0; j < y_count; ++j)
+    for (std::size_t i = 0; i < x_count; ++i)
+      samples[i * y_count + j] = waves.sample(i, static_cast<long>(j) - static_cast<long>(half_y));
   return std::make_unique<SampledSurface>("texture", h, x_count, y_count, std::move(samples));
 }
 

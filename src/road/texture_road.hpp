@@ -13,10 +13,17 @@
 // `anisotropy` (surfaces only) = "isotropic" (default) | "transverse" | "longitudinal".
 //
 // Spectrum: constant density within each band edge to edge, and the isotropic 2-D density from
-// the Abel inversion of the line density (texture_band_psd.hpp). Random phases: spectral
-// synthesis with complex normal amplitudes (spectral_synthesis.hpp), absolute, not rescaled, so
-// the band levels are the target in expectation (a single profile scatters about it as a
-// chi-square with 2 × (modes in the band) degrees of freedom).
+// the Abel inversion of the line density (texture_band_psd.hpp). Random phases with fixed
+// amplitudes (spectral_synthesis.hpp, SynthesisAmplitudes::fixed; Shinozuka & Deodatis 1991):
+// every realisation holds the target, not only the mean over seeds. A profile is one period of
+// its own length (at least 8 longest wavelengths), so the periodogram of the whole profile is the
+// target in every band, for every seed (issue 26: with complex normal amplitudes a single 20 m
+// profile missed bands of 30 to 60 spectral lines by up to ±2.5 dB, a chi-square with 2M degrees
+// of freedom). A window (the Hann window of texture_spectrum) mixes neighbouring lines and still
+// scatters a band of M lines by about 0.97/sqrt(M) (relative); a shorter piece of the profile
+// scatters as any random profile of that length. An isotropic surface is one oblique plane wave
+// per wavenumber along x, its lateral wavenumber drawn from the isotropic spectrum
+// (texture_waves.hpp): every line along x holds the target exactly, as the profile does.
 //
 // Anisotropy of a surface, precisely:
 //  - "isotropic": the 2-D density depends on |(nx, ny)| only; a line in any direction has the
@@ -27,11 +34,14 @@
 //    lead-in window; every line across the road has the target spectrum; lines along the road
 //    are constant beyond the lead-in.
 //
-// Extent, as for the random roads: the profile covers [0, max(length, x_max)], the surface also
-// |y| <= width/2; a run within them sees the same road whatever its duration. Periodic synthesis
-// grids keep a margin of two longest wavelengths (and at least eight of them) beyond the extent,
-// so the ends are not correlated through the wrap. A raised-cosine window over the first lead_in
-// metres takes r to 0 at x = 0 with zero slope (r = 0 for x < 0, the flat lead-in).
+// Extent: the profile covers [0, max(length, x_max)] and is periodic over it (x = 0 and the end
+// are neighbours through the wrap: nothing reads both); a run within it sees the same road
+// whatever its duration. The isotropic surface has the same period along x and is made line by
+// line as it is read (make_rolling_texture_surface; texture_waves.hpp), the same road whatever
+// the tyre's width: its memory is that of the lines a tyre reads. `width` bounds |y| <= width/2
+// (the whole map, and the check against the tyre's contact grid). The anisotropic surfaces hold
+// one line (along x over the road, or across over the width). A raised-cosine window over the first lead_in metres takes r to 0 at x = 0
+// with zero slope (r = 0 for x < 0, the flat lead-in).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -66,9 +76,14 @@ void read_texture_keys(const ConfigTable& road, TextureRoadSpec& spec, bool surf
 // is an InputError whose key is the bare key name and whose source is empty.
 std::vector<double> checked_texture_band_centres(const TextureRoadSpec& spec);
 
-// Both generate the road; bad parameters are InputErrors naming the bare key (the factories add
-// the file and the section).
+// All generate the road; bad parameters are InputErrors naming the bare key (the factories add
+// the file and the section). make_texture_surface holds the whole map of [0, max(length, x_max)]
+// x |y| <= width/2 (at most 2^26 points), sample for sample the road that
+// make_rolling_texture_surface makes line by line for a tyre, which the road factory uses.
 std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec);
+// The road's sample spacing (m): sample_spacing, or its default, after the same checks.
+double texture_sample_spacing(const TextureRoadSpec& spec);
 std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec);
+std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec& spec);
 
 }  // namespace rollnoise

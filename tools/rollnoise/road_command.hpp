@@ -17,6 +17,7 @@ struct RoadOptions {
   std::vector<std::string> overrides; // --set road.key=value
   double length = 7.0;                // m of a generated road to analyse
   double spacing = 0.2e-3;            // m between the samples of a generated road
+  bool spacing_given = false;         // --spacing was given (else a texture road is read at its own grid)
   int lines = 1;                      // lateral lines of a generated road
   double width = 0.16;                // m across which the lines are spread
   bool force = false;                 // run even when the size estimate says it does not fit
