@@ -45,7 +45,7 @@ cat "$calibration_log"
 # The paper's Fig. 3, 4a and 4b, drawn from the runs' CSV files; each script stays beside
 # its PNG so it can be restyled and redrawn.
 mkdir -p "$out/figures"
-for script in docs/figures/*.gp; do
+for script in docs/figures/fig*.gp; do
   cp "$script" "$out/figures/"
   (cd "$out/figures" && gnuplot "$(basename "$script")")
 done
