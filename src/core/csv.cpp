@@ -123,6 +123,24 @@ std::string read_text_file(const std::filesystem::path& path) {
   return buffer.str();
 }
 
+std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& what) {
+  const std::string source = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(source, "", "file not found (or not a regular file)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(source, "", "cannot read its size: " + ec.message());
+  if (size > max_bytes) {
+    throw InputError(source, "", "larger than " + std::to_string(max_bytes >> 20) + " MiB: not a " + what +
+                                     " this reader accepts");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(source, "", "cannot be opened for reading");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
 NumericCsv read_numeric_csv(const std::filesystem::path& path, EmptyCells empty) {
   return parse_numeric_csv(read_text_file(path), path.string(), empty);
 }

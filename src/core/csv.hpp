@@ -2,6 +2,7 @@
 // Numeric CSV files: a header line of column names, then rows of numbers. Lines starting
 // with '#' are comments. Readers survive arbitrary bytes: anything else is an InputError
 // naming the file, line and column.
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -34,6 +35,9 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source,
 NumericCsv read_numeric_csv(const std::filesystem::path& path, EmptyCells empty = EmptyCells::reject);
 // The whole content of a file; InputError naming it when it is missing or unreadable.
 std::string read_text_file(const std::filesystem::path& path);
+// The same, for a reader that takes at most `max_bytes`: a larger file is an InputError ("larger
+// than N MiB: not a `what` this reader accepts"), told from its size before it is read.
+std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& what);
 
 // `text` without leading and trailing blanks, tabs and carriage returns.
 std::string_view trim_blanks(std::string_view text);

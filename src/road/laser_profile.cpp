@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <optional>
 
@@ -228,23 +227,7 @@ MeasuredProfile parse_laser_profile(std::string_view text, const std::string& so
 }
 
 MeasuredProfile read_laser_profile(const std::filesystem::path& path) {
-  const std::string source = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(source, "", "file not found (or not a regular file)");
-  }
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw InputError(source, "", "cannot read its size: " + ec.message());
-  if (size > laser_max_bytes) {
-    throw InputError(source, "", "larger than " + std::to_string(laser_max_bytes >> 20) +
-                                     " MiB: not a laser profile this reader accepts");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(source, "", "cannot be opened for reading");
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  return parse_laser_profile(text, source);
+  return parse_laser_profile(read_text_file(path, laser_max_bytes, "laser profile"), path.string());
 }
 
 }  // namespace rollnoise

@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <string>
 
@@ -219,23 +218,7 @@ LineLaserProfiles parse_line_laser_csv(std::string_view text, const std::string&
 }
 
 LineLaserProfiles read_line_laser_csv(const std::filesystem::path& path) {
-  const std::string source = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(source, "", "file not found (or not a regular file)");
-  }
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw InputError(source, "", "cannot read its size: " + ec.message());
-  if (size > line_laser_max_bytes) {
-    throw InputError(source, "", "larger than " + std::to_string(line_laser_max_bytes >> 20) +
-                                     " MiB: not a line laser file this reader accepts");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(source, "", "cannot be opened for reading");
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  return parse_line_laser_csv(text, source);
+  return parse_line_laser_csv(read_text_file(path, line_laser_max_bytes, "line laser file"), path.string());
 }
 
 }  // namespace rollnoise
