@@ -150,6 +150,9 @@ struct BadRoad {
 };
 
 TEST(RoadCli, BadInputIsOneMessageAndExitStatusTwo) {
+  // 0.6 m at 2 mm: long enough for MPD's 100 mm segments, sampled twice as coarsely as they allow.
+  std::string coarse_profile = "x,z\n";
+  for (int i = 0; i <= 300; ++i) coarse_profile += std::to_string(0.002 * i) + "," + (i % 2 ? "1e-4" : "0") + "\n";
   const std::vector<BadRoad> cases{
       {"non-monotonic x", "p.csv", "x,z\n0,0\n0.002,1e-4\n0.001,2e-4\n0.003,0\n", "p.csv"},
       {"NaN in levels", "r.toml", "[road]\ntype = \"texture\"\nwavelengths = [0.01, 0.02]\nlevels = [40.0, nan]\n", "levels"},
@@ -161,6 +164,7 @@ TEST(RoadCli, BadInputIsOneMessageAndExitStatusTwo) {
       {"all dropouts", "p.csv", "x,z\n0,\n0.001,\n0.002,\n0.003,\n", "p.csv"},
       {"unknown key", "r.toml", "[road]\ntype = \"iso8608\"\nclass = \"C\"\ncolour = \"grey\"\n", "colour"},
       {"bad class", "r.toml", "[road]\ntype = \"iso8608\"\nclass = \"Z\"\n", "class"},
+      {"profile sampled coarser than ISO 13473-1 allows", "p.csv", coarse_profile.c_str(), "at most 1 mm"},
   };
   for (const BadRoad& c : cases) {
     Workspace ws;
@@ -192,6 +196,16 @@ TEST(RoadCli, NumberOptionOutOfRangeNamesTheOptionAndTheBound) {
     EXPECT_LT(r.err.size(), 200u) << r.err;
     EXPECT_FALSE(fs::exists(ws.path("out")));
   }
+}
+
+TEST(RoadCli, SpacingCoarserThanTheAnalysisAllowsNamesTheOption) {
+  Workspace ws;
+  ws.write("r.toml", "[road]\ntype = \"iso8608\"\nclass = \"C\"\n");
+  const RunResult r = ws.run({"road", "r.toml", "--out", "out", "--spacing", "0.05"});
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "--spacing: must be at most 0.001 m")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("out")));
 }
 
 TEST(RoadCli, Help) {

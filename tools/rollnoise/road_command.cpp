@@ -21,6 +21,7 @@
 #include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
 #include "core/progress.hpp"
+#include "road/mean_profile_depth.hpp"
 #include "road/profile_analysis.hpp"
 #include "road/profile_file.hpp"
 #include "road/road_surface.hpp"
@@ -236,6 +237,13 @@ int run_road(const RoadOptions& options) {
   if (!is_toml && !options.overrides.empty()) {
     throw InputError(options.input, "--set", "applies to a TOML road; a profile file has no keys to set");
   }
+  // ISO 13473-1's analysis takes profiles sampled at 1 mm or finer: say so of the option, before
+  // any road is made.
+  if (options.spacing_given && options.spacing > mpd_max_spacing_m) {
+    throw InputError("command line", "--spacing",
+                     "must be at most 0.001 m: the ISO 13473-1 analysis needs a sample spacing of at most 1 mm (got " +
+                         format_number(options.spacing) + ")");
+  }
   if (std::ceil(options.length / options.spacing) > static_cast<double>(max_profile_samples)) {
     throw InputError(options.input, "--length",
                      "--length / --spacing gives more than " + std::to_string(max_profile_samples) + " samples");
@@ -257,7 +265,15 @@ int run_road(const RoadOptions& options) {
     road.description = "profile " + input.filename().string();
   }
   const LoadedProfile& p = road.profile;
-  const ProfileAnalysis analysis = analyse_profile(p.z_lines, p.spacing_m);
+  // The analysis names what is wrong (a profile sampled coarser than 1 mm, say); the file it
+  // came from is the input's.
+  const ProfileAnalysis analysis = [&] {
+    try {
+      return analyse_profile(p.z_lines, p.spacing_m);
+    } catch (const InputError& error) {
+      throw error.source().empty() ? error.with_source(options.input) : error;
+    }
+  }();
 
   StagedOutputDirectory staged(out);
   write_road_csv(staged.staging() / "road.csv", p);
