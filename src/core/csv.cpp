@@ -111,6 +111,20 @@ NumericCsv parse_numeric_csv(const std::string& text, const std::string& source,
   return csv;
 }
 
+std::optional<double> parse_finite_number(std::string_view text) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+bool is_dropout_cell(std::string_view text) {
+  return text.empty() || text == "NaN" || text == "nan" || text == "NAN";
+}
+
 std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {

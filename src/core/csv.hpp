@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,6 +39,12 @@ std::string read_text_file(const std::filesystem::path& path);
 // The same, for a reader that takes at most `max_bytes`: a larger file is an InputError ("larger
 // than N MiB: not a `what` this reader accepts"), told from its size before it is read.
 std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& what);
+
+// A finite number written in full (a leading '+' allowed), or nothing: text that is empty, not a
+// number, followed by anything, or infinite or NaN.
+std::optional<double> parse_finite_number(std::string_view text);
+// A cell that marks a missing reading in measured profiles: empty, or NaN as instruments write it.
+bool is_dropout_cell(std::string_view text);
 
 // `text` without leading and trailing blanks, tabs and carriage returns.
 std::string_view trim_blanks(std::string_view text);

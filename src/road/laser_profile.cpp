@@ -1,7 +1,6 @@
 #include "road/laser_profile.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iterator>
 #include <optional>
@@ -51,20 +50,6 @@ std::optional<std::size_t> column(std::string_view header, std::string_view name
     if (*f == name) return c;
   }
   return std::nullopt;
-}
-
-std::optional<double> parse_number(std::string_view text) {
-  double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-bool is_dropout(std::string_view text) {
-  return text.empty() || text == "NaN" || text == "nan" || text == "NAN";
 }
 
 // Index range [begin, end) of the road between the reference plates of `z` (heights, NaN for
@@ -167,7 +152,7 @@ MeasuredProfile parse_laser_profile(std::string_view text, const std::string& so
     if (!distance_field || !depth_field) {
       throw InputError(source, where(), "too few tab-separated fields (needs \"Distance (mm)\" and \"Depth (mm)\")");
     }
-    const auto distance = parse_number(*distance_field);
+    const auto distance = parse_finite_number(*distance_field);
     if (!distance) {
       throw InputError(source, where() + ", Distance (mm)",
                        "\"" + printable_excerpt(*distance_field) + "\" is not a finite number");
@@ -178,8 +163,8 @@ MeasuredProfile parse_laser_profile(std::string_view text, const std::string& so
                            format_number(x_mm.back()) + "): distances must increase");
     }
     double height = std::nan("");
-    if (!is_dropout(*depth_field)) {
-      const auto depth = parse_number(*depth_field);
+    if (!is_dropout_cell(*depth_field)) {
+      const auto depth = parse_finite_number(*depth_field);
       if (!depth) {
         throw InputError(source, where() + ", Depth (mm)",
                          "\"" + printable_excerpt(*depth_field) + "\" is neither a finite number nor NaN");

@@ -1,6 +1,5 @@
 #include "road/line_laser_csv.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -39,20 +38,6 @@ std::size_t for_each_field(std::string_view line, Each each) {
   }
 }
 
-std::optional<double> parse_number(std::string_view text) {
-  double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-bool is_dropout(std::string_view text) {
-  return text.empty() || text == "NaN" || text == "nan" || text == "NAN";
-}
-
 std::string_view first_field(std::string_view line) { return trim_blanks(line.substr(0, line.find(','))); }
 
 std::string_view without_bom(std::string_view text) {
@@ -71,7 +56,7 @@ bool looks_like_line_laser_csv(std::string_view head) {
   if (trim_blanks(first).empty() || head.find('\n') == std::string_view::npos) return false;
   bool numbers = true;
   const std::size_t fields = for_each_field(first, [&](std::size_t, std::string_view f) {
-    numbers = parse_number(f).has_value();
+    numbers = parse_finite_number(f).has_value();
     return numbers;
   });
   if (!numbers || fields < 3) return false;
@@ -115,7 +100,7 @@ LineLaserProfiles parse_line_laser_csv(std::string_view text, const std::string&
     double stamp = 0.0;
     for_each_field(line, [&](std::size_t index, std::string_view f) {
       if (index == 0) {
-        const auto t = parse_number(f);
+        const auto t = parse_finite_number(f);
         if (!t) {
           throw InputError(source, line_key(number) + ", field 1 (time stamp)",
                            "\"" + printable_excerpt(f) + "\" is not a finite number: each line begins with the "
@@ -126,11 +111,11 @@ LineLaserProfiles parse_line_laser_csv(std::string_view text, const std::string&
       }
       if (values.size() > limit) return false;
       const std::string key = line_key(number) + ", field " + std::to_string(index + 1);
-      if (heights && is_dropout(f)) {
+      if (heights && is_dropout_cell(f)) {
         values.push_back(std::nan(""));
         return true;
       }
-      const auto v = parse_number(f);
+      const auto v = parse_finite_number(f);
       if (!v) {
         throw InputError(source, key,
                          "\"" + printable_excerpt(f) + "\" is not a finite number" +
