@@ -126,15 +126,7 @@ bool is_dropout_cell(std::string_view text) {
 }
 
 std::string read_text_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(path.string(), "", "file not found (or not a regular file)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot be opened for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  return read_text_file(path, std::numeric_limits<std::uintmax_t>::max(), "file");
 }
 
 std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& what) {
