@@ -6,7 +6,6 @@
 #include <fstream>
 #include <limits>
 #include <ostream>
-#include <sstream>
 
 #include "core/error.hpp"
 
