@@ -10,7 +10,10 @@ if ! command -v mpirun >/dev/null 2>&1; then
   exit 0
 fi
 # A program built without MPI refuses to run under mpirun -n 2 (exit status 2): skip, saying why.
-if ! ldd "$ROLLNOISE" 2>/dev/null | grep -q 'libmpi'; then
+# (ldd's output is read whole first: under pipefail, `ldd | grep -q` fails whenever grep stops
+# reading before ldd has written everything.)
+libraries=$(ldd "$ROLLNOISE" 2>/dev/null || true)
+if [[ $libraries != *libmpi* ]]; then
   echo "mpi-study: skipped: $ROLLNOISE is not built with MPI (install libopenmpi-dev openmpi-bin, then rebuild: bash tools/setup.sh)"
   exit 0
 fi
