@@ -121,7 +121,7 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
   // rather than an unknown type.
   if (road.contains("type")) {
     const std::string asked = road.text("type");
-    if (asked == "random_surface" || asked == "surface") {
+    if (asked == "random_surface" || asked == "surface" || asked == "profile_surface") {
       road.fail("type", "\"" + asked +
                             "\" is a 2-D road surface r(x, y): it needs a tyre model, which rolls "
                             "lateral lines over the road; point models (sdof, coupled_sdof) take a "

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "road/aggregate_road.hpp"
 #include "road/height_map_surface.hpp"
+#include "road/profile_surface_road.hpp"
 #include "road/random_surface.hpp"
 #include "road/random_spectrum.hpp"
 #include "road/texture_road.hpp"
@@ -28,6 +29,13 @@ ProfileSurface::ProfileSurface(std::unique_ptr<RoadProfile> profile) : profile_(
 std::string ProfileSurface::type() const { return profile_->type(); }
 
 double ProfileSurface::height(double x, double /*y*/) const { return profile_->height(x); }
+
+std::vector<std::string> ProfileSurface::warnings() const {
+  if (profile_->type() != "file") return {};
+  return {"[road] type = \"file\": the one measured line is rolled under every lateral line of the contact patch, "
+          "identical across the tyre as no real surface is, which overstates the excitation; for a 2-D surface with "
+          "the line's texture spectrum and height distribution use type = \"profile_surface\" with the same file"};
+}
 
 namespace {
 
@@ -102,7 +110,8 @@ std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x
     road.fail("about", "must be a table of descriptive keys ([about] name = ..., description = ...)");
   }
   const std::string type = road.choice(
-      "type", {"flat", "sine", "random", "file", "cleat", "iso8608", "random_surface", "surface", "texture", "aggregate"});
+      "type", {"flat", "sine", "random", "file", "cleat", "iso8608", "random_surface", "surface", "profile_surface", "texture", "aggregate"});
+  if (type == "profile_surface") return make_profile_surface(road, x_max, half_width);
   if (type == "random_surface") return make_random_surface(road, x_max, half_width);
   if (type == "surface") return make_height_map(road, x_min, x_max, half_width);
   if (type == "texture") return make_texture_map(road, x_max, half_width);

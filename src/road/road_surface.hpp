@@ -6,7 +6,9 @@
 // Convention shared with the 1-D profiles (road_profile.hpp): r = 0 for x < 0, the flat lead-in
 // on which the static load's pre-history rolled.
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "road/road_profile.hpp"
 
@@ -18,12 +20,17 @@ class RoadSurface {
  public:
   virtual ~RoadSurface() = default;
   // "flat", "sine", "random", "file", "cleat", "iso8608" (a 1-D profile on every line),
-  // "random_surface", "surface" (a height-map file), "texture", "aggregate".
+  // "random_surface", "surface" (a height-map file), "profile_surface", "texture", "aggregate".
   virtual std::string type() const = 0;
   // Height (m) at x along the road and y across it. r = 0 for x < 0. Generated and read
   // surfaces cover the range they were built for; outside it (x >= 0) they throw
   // std::logic_error.
   virtual double height(double x, double y) const = 0;
+  // The spacing (m) a generated road was made at, where reading it shows it as made, without
+  // interpolation between its samples; empty: any spacing.
+  virtual std::optional<double> sample_spacing() const { return std::nullopt; }
+  // What a user should know before rolling a tyre over this road; empty: nothing.
+  virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 // A 1-D profile used on every lateral line: r(x, y) = r(x).
@@ -34,6 +41,9 @@ class ProfileSurface final : public RoadSurface {
 
   std::string type() const override;
   double height(double x, double y) const override;
+  // A measured line (type "file") rolled under every lateral line of a tyre is fully correlated
+  // across the tyre, which no real surface is: said, naming profile_surface.
+  std::vector<std::string> warnings() const override;
 
   const RoadProfile& profile() const noexcept { return *profile_; }
 

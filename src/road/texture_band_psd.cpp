@@ -46,6 +46,8 @@ TextureBandPsd::TextureBandPsd(std::span<const double> centres_m, std::span<cons
     density_above_.push_back(std::abs(g) < 1e-300 ? 0.0 : g);
   }
   density_above_.back() = 0.0;
+  for (std::size_t k = 0; k < step_.size(); ++k)
+    if (step_[k] > 0.0) highest_rising_edge_ = edge_n_[k];
 }
 
 double TextureBandPsd::line_density(double n) const {
@@ -82,6 +84,30 @@ double TextureBandPsd::isotropic_line_cumulative(double nx, double ny) const {
   }
   const double value = -sum / (2.0 * std::numbers::pi);
   return ny < 0.0 ? -value : value;
+}
+
+double TextureBandPsd::isotropic_line_cells(double nx, std::vector<double>& bound, std::vector<double>& cumulative,
+                                            std::vector<double>& weight) const {
+  nx = std::abs(nx);
+  bound.assign(1, 0.0);
+  for (double e : edge_n_)
+    if (e > nx) bound.push_back(std::sqrt((e - nx) * (e + nx)));
+  cumulative.resize(bound.size());
+  weight.resize(bound.size() - 1);
+  for (std::size_t c = 0; c < bound.size(); ++c) cumulative[c] = isotropic_line_cumulative(nx, bound[c]);
+  double total = 0.0;
+  for (std::size_t c = 0; c + 1 < bound.size(); ++c) {
+    weight[c] = std::max(0.0, cumulative[c + 1] - cumulative[c]);
+    total += weight[c];
+  }
+  return total;
+}
+
+double TextureBandPsd::realisable_line_density(double n) const {
+  // Above every edge where G rises with n, S >= 0 for all q >= n: nothing is clipped.
+  if (std::abs(n) >= highest_rising_edge_) return line_density(n);
+  std::vector<double> bound, cumulative, weight;
+  return 4.0 * isotropic_line_cells(n, bound, cumulative, weight);  // k >= 0 holds a quarter
 }
 
 }  // namespace rollnoise

@@ -56,6 +56,19 @@ class TextureBandPsd {
   // two of these, clipped at 0: the cells along nx then sum to the line density exactly,
   // however coarse the grid is in ny; texture_waves.hpp draws lateral wavenumbers from them.
   double isotropic_line_cumulative(double nx, double ny) const;
+  // The cells of that integral along the line of constant nx >= 0: `bound` gets 0 and the
+  // lateral wavenumbers sqrt(e^2 - nx^2) where the line crosses each edge e > nx, `cumulative`
+  // isotropic_line_cumulative at each bound, `weight` each cell's integral clipped at 0 (S keeps
+  // its sign within a cell). Returns the sum of the weights, the integral over k >= 0: a quarter
+  // of the one-sided line density that an isotropic surface with S clipped at 0 has at nx (the
+  // target G(nx)/4 where S is realisable).
+  double isotropic_line_cells(double nx, std::vector<double>& bound, std::vector<double>& cumulative,
+                              std::vector<double>& weight) const;
+  // The one-sided line density (m^2 per cycle/m) of the isotropic surface with S clipped at 0,
+  // along any line: 4 × isotropic_line_cells. G(n) where S is realisable; it differs below the
+  // lowest band (and below an edge where the levels rise by more than 1 dB per band towards
+  // longer wavelengths), where the clipped surface's lines hold variance the bands do not.
+  double realisable_line_density(double n) const;
   // The band edges where G changes (cycles/m), increasing.
   const std::vector<double>& edges() const noexcept { return edge_n_; }
   // The largest wavenumber where S is not 0: the highest band edge (cycles/m).
@@ -72,6 +85,7 @@ class TextureBandPsd {
   std::vector<double> edge_n_;
   std::vector<double> density_above_;  // G on (edge_n_[k], edge_n_[k+1]); 0 above the last
   std::vector<double> step_;           // dG at edge_n_[k]
+  double highest_rising_edge_ = 0.0;   // the largest edge with dG > 0
   double variance_ = 0.0;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <new>
@@ -161,12 +162,20 @@ std::size_t texture_period(const TextureScales& s, double last) {
 // and random phases (SynthesisAmplitudes::fixed) on the period texture_period(): when that is
 // `last`, the record [0, last·spacing] is one period (sample `last` repeats sample 0), so its
 // periodogram is the target in every band, for every seed; else the period is cut to last + 1.
-std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed) {
+// With a marginal (TextureRoadSpec::marginal) each sample of the period is mapped through it.
+std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales& s, double last, std::uint64_t seed,
+                                 const std::function<double(double)>& marginal) {
   const std::size_t n = texture_period(s, last);
   const double period = s.spacing * static_cast<double>(n);
   std::vector<double> r = synthesise_periodic_profile(
       n, s.spacing, seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); },
       SynthesisAmplitudes::fixed);
+  if (marginal) {
+    double square = 0.0;  // the mean is 0: no mode at n = 0
+    for (double v : r) square += v * v;
+    const double rms = std::sqrt(square / static_cast<double>(n));
+    for (double& v : r) v = marginal(v / rms);
+  }
   const auto count = static_cast<std::size_t>(last) + 1;
   if (r.size() < count) r.push_back(r.front());  // the period's end: the first sample again
   r.resize(count);
@@ -223,7 +232,7 @@ std::unique_ptr<TextureLineSurface> make_line_surface(const TextureRoadSpec& spe
   const bool along_x = spec.anisotropy == TextureRoadSpec::Anisotropy::transverse;
   const double half_y = std::max(1.0, std::ceil(spec.width / 2.0 / h));
   const double last = along_x ? std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / h)) : 2.0 * half_y;
-  SampledProfile line("texture", h, texture_line(c.psd, c.scales, last, spec.seed));
+  SampledProfile line("texture", h, texture_line(c.psd, c.scales, last, spec.seed, spec.marginal));
   return std::make_unique<TextureLineSurface>(std::move(line), along_x, h * half_y, c.scales.lead_in);
 }
 
@@ -235,7 +244,7 @@ std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec
   const TextureBandPsd psd(centres, spec.levels);
   const TextureScales s = check_scales(spec, psd);
   const double last = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / s.spacing));
-  std::vector<double> r = texture_line(psd, s, last, spec.seed);
+  std::vector<double> r = texture_line(psd, s, last, spec.seed, spec.marginal);
   for (std::size_t j = 0; j < r.size(); ++j) r[j] *= lead_in_window(s.spacing * static_cast<double>(j), s.lead_in);
   return std::make_unique<SampledProfile>("texture", s.spacing, std::move(r));
 }
@@ -250,7 +259,7 @@ std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec&
   if (spec.anisotropy != TextureRoadSpec::Anisotropy::isotropic) return make_line_surface(spec, c);
   const double last = std::max(1.0, std::ceil(std::max(spec.length, spec.x_max) / c.scales.spacing));
   return std::make_unique<TextureWaveSurface>(c.psd, c.scales.spacing, texture_period(c.scales, last), spec.seed,
-                                              c.scales.lead_in);
+                                              c.scales.lead_in, spec.marginal);
 }
 
 std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec) {
@@ -273,7 +282,7 @@ std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec
         samples[i * y_count + j] = line->height(h * static_cast<double>(i), h * (static_cast<double>(j) - static_cast<double>(half_y)));
     return std::make_unique<SampledSurface>("texture", h, x_count, y_count, std::move(samples));
   }
-  const TextureWaveSurface waves(c.psd, h, texture_period(c.scales, last_x), spec.seed, c.scales.lead_in);
+  const TextureWaveSurface waves(c.psd, h, texture_period(c.scales, last_x), spec.seed, c.scales.lead_in, spec.marginal);
   for (std::size_t j = 0; j < y_count; ++j)
     for (std::size_t i = 0; i < x_count; ++i)
       samples[i * y_count + j] = waves.sample(i, static_cast<long>(j) - static_cast<long>(half_y));

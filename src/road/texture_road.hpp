@@ -43,6 +43,7 @@
 // one line (along x over the road, or across over the width). A raised-cosine window over the first lead_in metres takes r to 0 at x = 0
 // with zero slope (r = 0 for x < 0, the flat lead-in).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -66,6 +67,10 @@ struct TextureRoadSpec {
   Anisotropy anisotropy = Anisotropy::isotropic;  // (surface)
   double x_max = 0.0;       // the run's largest x (m)
   double half_width = 0.0;  // the run's largest |y| (m), <= width / 2 (surface)
+  // Maps a standard normal height (the Gaussian road over its rms, per period) to the road's
+  // height, before the lead-in window; empty: the Gaussian road itself. A surface generated from
+  // a measured record gets the record's height distribution through it (profile_surface_road.hpp).
+  std::function<double(double)> marginal;
 };
 
 // Reads the keys of a [road] table of type "texture" into `spec`; `surface` says whether the

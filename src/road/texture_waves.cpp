@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <cmath>
 #include <memory>
 #include <new>
@@ -35,8 +36,8 @@ constexpr int bisection_steps = 40;
 }  // namespace
 
 TextureWaveSurface::TextureWaveSurface(const TextureBandPsd& psd, double spacing, std::size_t samples,
-                                       std::uint64_t seed, double lead_in)
-    : spacing_(spacing), samples_(samples), lead_in_(lead_in) {
+                                       std::uint64_t seed, double lead_in, std::function<double(double)> marginal)
+    : spacing_(spacing), samples_(samples), lead_in_(lead_in), marginal_(std::move(marginal)) {
   if (!(spacing > 0.0) || samples < 2) throw std::invalid_argument("TextureWaveSurface: spacing > 0 and samples >= 2");
   const double period = spacing * static_cast<double>(samples);
   const double dn = 1.0 / period;
@@ -54,18 +55,8 @@ TextureWaveSurface::TextureWaveSurface(const TextureBandPsd& psd, double spacing
     // The integral of S along k >= 0 at this n, in cells between the k where the line crosses a
     // band edge (q = e): within a cell no term of S starts or ends, so S keeps its sign there
     // for a realisable target and clipping a cell at 0 clips exactly where S < 0.
-    bound.assign(1, 0.0);
-    for (double e : psd.edges())
-      if (e > n) bound.push_back(std::sqrt((e - n) * (e + n)));
+    const double total = psd.isotropic_line_cells(n, bound, edge_value, weight);
     const std::size_t cells = bound.size() - 1;
-    edge_value.resize(bound.size());
-    weight.resize(cells);
-    for (std::size_t c = 0; c < bound.size(); ++c) edge_value[c] = psd.isotropic_line_cumulative(n, bound[c]);
-    double total = 0.0;
-    for (std::size_t c = 0; c < cells; ++c) {
-      weight[c] = std::max(0.0, edge_value[c + 1] - edge_value[c]);
-      total += weight[c];
-    }
     if ((m - 1) % block == 0) {  // a new block: a random permutation of the strata (Fisher-Yates)
       for (std::size_t i = 0; i < block; ++i) stratum[i] = i;
       for (std::size_t i = block - 1; i > 0; --i) std::swap(stratum[i], stratum[engine() % (i + 1)]);
@@ -96,6 +87,10 @@ TextureWaveSurface::TextureWaveSurface(const TextureBandPsd& psd, double spacing
     const double k = 0.5 * (lo + hi);
     lateral_[m] = negative ? -k : k;
   }
+  double square = 0.0;
+  for (const auto& c : coefficient_) square += std::norm(c);
+  rms_ = std::sqrt(2.0 * square);
+  if (marginal_ && !(rms_ > 0.0)) throw std::invalid_argument("TextureWaveSurface: a marginal needs waves");
 }
 
 const std::vector<double>& TextureWaveSurface::line(long j) const {
@@ -115,8 +110,10 @@ const std::vector<double>& TextureWaveSurface::line(long j) const {
   }
   plan.execute();
   std::vector<double> values(n + 1);
-  for (std::size_t i = 0; i <= n; ++i)
-    values[i] = grid[i % n] * lead_in_window(spacing_ * static_cast<double>(i), lead_in_);
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double g = grid[i % n];
+    values[i] = (marginal_ ? marginal_(g / rms_) : g) * lead_in_window(spacing_ * static_cast<double>(i), lead_in_);
+  }
   // Hold at most max_synthesis_points samples of lines: drop the oldest first.
   while (!order_.empty() && (lines_.size() + 1) * (n + 1) > max_synthesis_points) {
     lines_.erase(order_.front());

@@ -42,6 +42,7 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <list>
 #include <map>
 #include <mutex>
@@ -57,8 +58,11 @@ class TextureWaveSurface final : public RoadSurface {
  public:
   // `samples`: the road's period along x in samples of `spacing` (>= 2); `lead_in` (m) as for
   // every texture road. Draws the waves (amplitude, phase, lateral wavenumber) from `seed`.
+  // `marginal` (optional) maps each sample's standard normal value (the Gaussian height over the
+  // lines' rms, the same on every line) to the road's height before the lead-in window
+  // (TextureRoadSpec::marginal): the surface of a measured record (profile_surface_road.hpp).
   TextureWaveSurface(const TextureBandPsd& psd, double spacing, std::size_t samples, std::uint64_t seed,
-                     double lead_in);
+                     double lead_in, std::function<double(double)> marginal = {});
 
   std::string type() const override { return "texture"; }
   // Bilinear between the samples at (i·spacing, j·spacing); r = 0 for x < 0; x beyond the
@@ -81,6 +85,8 @@ class TextureWaveSurface final : public RoadSurface {
   double lead_in_;
   std::vector<std::complex<double>> coefficient_;  // C_m, m = 0 .. samples/2 (FFTW's half spectrum)
   std::vector<double> lateral_;                    // k_m (cycles/m)
+  std::function<double(double)> marginal_;
+  double rms_ = 0.0;  // of every line before the marginal: sqrt(2 sum |C_m|^2)
   // Lines made so far, by j, and their order of making (the oldest is dropped first).
   mutable std::mutex mutex_;
   mutable std::map<long, std::vector<double>> lines_;
