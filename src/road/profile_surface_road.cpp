@@ -120,7 +120,7 @@ std::vector<std::string> surface_warnings(const RecordTexture& record) {
   std::vector<std::string> warnings;
   const double longest = record.centres_m.back() * std::pow(10.0, 0.05);
   if (longest < tyre_wavelength_m) {
-    warnings.push_back("[road] profile_surface: the record's lines (" + format_number(record.shortest_line_m) +
+    warnings.push_back("[road] profile_surface: the record's lines (" + format_number(std::round(record.shortest_line_m * 1e3) / 1e3) +
                        " m) support texture wavelengths up to " + format_number(std::round(longest * 1e4) / 10.0) +
                        " mm only; the surface has none longer, where a tyre is excited most (up to 100 mm and "
                        "more): lines of at least " + format_number(std::ceil(record_band_length_factor * tyre_wavelength_m * 1.1220184543 * 100.0) / 100.0) +

@@ -258,6 +258,11 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
       make_road_surface(road_table, grid.x(0) - 3.0 * grid.dx(), grid.x(grid.window - 1) + 3.0 * grid.dx() + travel,
                         0.5 * grid.contact_width());
   stages.lap("road");
+  // What the road says a tyre should know (a single measured line under the whole patch, a
+  // record too short for a tyre's wavelengths): on stderr now and in the summary.
+  std::vector<std::string> road_warnings;
+  if (grid.lateral > 1) road_warnings = road->warnings();
+  for (const auto& warning : road_warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   StagedOutputDirectory staged(out);
   std::optional<ProgressReporter> progress;
@@ -433,7 +438,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   }
   plot_batch.draw();
   stages.lap("plots");
-  summary["warnings"] = trace.warnings;
+  std::vector<std::string> warnings = road_warnings;
+  warnings.insert(warnings.end(), trace.warnings.begin(), trace.warnings.end());
+  summary["warnings"] = warnings;
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
   summary["contact_time_s"] = contact_seconds;
   summary["step_loop_time_s"] = trace.step_loop_seconds;

@@ -282,5 +282,44 @@ TEST(ProfileSurface, ChipSealLinesHoldTheRecordsSpectrumAndDistribution) {
   check_surface_of({chip_seal_0, chip_seal_1}, 6.0, 5e-3);
 }
 
+// --- Warnings and bad input ----------------------------------------------------------------------
+
+TEST(ProfileSurface, SaysWhatATyreMisses) {
+  const auto fine = test::surface_from("type = \"profile_surface\"\nfile = \"" + fine_asphalt + "\"", 1.0, 0.05);
+  ASSERT_EQ(fine->warnings().size(), 1u);
+  EXPECT_MENTIONS(fine->warnings()[0], "lines (0.2 m) support texture wavelengths up to 44.7 mm only");
+  // A quarter of the shortest band's lower edge wavelength, as a texture road's.
+  EXPECT_NEAR(*fine->sample_spacing(), texture_band_centre_wavelength(0.8e-3) * std::pow(10.0, -0.05) / 4.0, 1e-12);
+  // One measured line under a whole patch: the warning names what to use instead.
+  const auto line = test::surface_from("type = \"file\"\nfile = \"" + chip_seal_0 + "\"", 1.0, 0.05);
+  ASSERT_EQ(line->warnings().size(), 1u);
+  EXPECT_MENTIONS(line->warnings()[0], "type = \"profile_surface\"");
+  EXPECT_TRUE(test::surface_from("type = \"flat\"")->warnings().empty());
+}
+
+TEST(ProfileSurface, RefusesBadInputNamingTheKey) {
+  const test::TempFolder folder("rollnoise_profile_surface");
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\""), "case.toml: [road] file: is required");
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = []"), "[road] file: must name a profile file");
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = [1]"), "item 1 is not a string");
+  // Too short for any band: 10 mm at 1 mm.
+  std::string short_csv = "x,z\n";
+  for (int i = 0; i < 10; ++i) short_csv += std::to_string(i * 1e-3) + "," + std::to_string((i % 3) * 1e-5) + "\n";
+  const auto too_short = folder.write("short.csv", short_csv);
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = \"" + too_short.string() + "\""),
+                  "supports no texture band");
+  // All dropouts: the reader says so, naming the data file.
+  std::string empty_csv = "x,z\n";
+  for (int i = 0; i < 100; ++i) empty_csv += std::to_string(i * 1e-4) + ",\n";
+  const auto dropouts = folder.write("dropouts.csv", empty_csv);
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = \"" + dropouts.string() + "\""), "dropouts.csv");
+  // Records at different spacings, and an unknown key.
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = [\"" + fine_asphalt + "\", \"" + chip_seal_0 + "\"]"),
+                  "different spacings");
+  EXPECT_MENTIONS(test::surface_error("type = \"profile_surface\"\nfile = \"" + fine_asphalt + "\"\nlevels = [1.0]"), "levels");
+  // A point model takes a 1-D profile: the 2-D type is named as such.
+  EXPECT_MENTIONS(test::profile_error("type = \"profile_surface\"\nfile = \"" + fine_asphalt + "\""), "2-D road surface");
+}
+
 }  // namespace
 }  // namespace rollnoise

@@ -29,6 +29,7 @@
 #include "road/texture_spectrum.hpp"
 #include "simulation/run_size.hpp"
 #include "number_checks.hpp"
+#include "road/profile_surface_road.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -97,6 +98,11 @@ RoadUnderTest generate(const RoadOptions& options) {
   const double half_width = options.lines > 1 ? options.width / 2.0 : 0.0;
   const std::unique_ptr<RoadSurface> surface = make_road_surface(road, 0.0, options.length, half_width);
   if (road_toml["type"].value_or(std::string()) == "texture") out.target = texture_target(road_toml);
+  // A surface from measured lines shows the record's levels as its target.
+  if (const auto* measured = dynamic_cast<const ProfileSurfaceRoad*>(surface.get())) {
+    for (std::size_t b = 0; b < measured->record().nominal_m.size(); ++b)
+      out.target.emplace_back(measured->record().nominal_m[b], measured->record().levels_db[b]);
+  }
   out.description = surface->type() + " road from " + path.string();
 
   // A texture road is read at its own grid unless --spacing says otherwise: between its samples
@@ -109,6 +115,7 @@ RoadUnderTest generate(const RoadOptions& options) {
     read_texture_keys(road, spec, true, 20.0);
     spacing = texture_sample_spacing(spec);
   }
+  if (!options.spacing_given && surface->sample_spacing()) spacing = *surface->sample_spacing();
   const auto samples = static_cast<std::size_t>(std::floor(options.length / spacing)) + 1;
   LoadedProfile& p = out.profile;
   p.spacing_m = spacing;
