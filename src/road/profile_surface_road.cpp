@@ -37,7 +37,8 @@ struct Record {
   std::string names;  // for messages
 };
 
-Record read_record(const ConfigTable& road) {
+// The files `file` names (a string or a list of strings), found relative to the file that sets it.
+std::vector<std::filesystem::path> record_files(const ConfigTable& road) {
   const toml::node* node = road.raw("file");
   const std::string files = "a profile file (a CSV of x,z or x,z_1..z_n; a laser profilometer export; a line laser "
                             "file; an HDF5 height map), or a list of such files measured at the same spacing";
@@ -54,21 +55,30 @@ Record read_record(const ConfigTable& road) {
     }
   }
   if (names.empty()) road.fail("file", allowed);
-  Record record;
+  std::vector<std::filesystem::path> paths;
   for (const std::string& name : names) {
     if (name.empty()) road.fail("file", allowed);
     const ReferencedFile found = find_referenced_file(name, road.source_of("file"));
     road.note_referenced_file("file", found);
-    LoadedProfile p = load_profile_file(found.path);
+    paths.push_back(found.path);
+  }
+  return paths;
+}
+
+// The measured lines of those files, at one spacing.
+Record read_record(const ConfigTable& road, const std::vector<std::filesystem::path>& paths) {
+  Record record;
+  for (const std::filesystem::path& path : paths) {
+    LoadedProfile p = load_profile_file(path);
     if (record.lines.empty()) {
       record.spacing = p.spacing_m;
     } else if (std::abs(p.spacing_m / record.spacing - 1.0) > 1e-6) {
       road.fail("file", "the files are sampled at different spacings (" + format_number(record.spacing) + " m and " +
-                            format_number(p.spacing_m) + " m in " + found.path.string() +
+                            format_number(p.spacing_m) + " m in " + path.string() +
                             "): list only records measured at one spacing");
     }
     for (auto& line : p.z_lines) record.lines.push_back(std::move(line));
-    record.names += (record.names.empty() ? "" : ", ") + found.path.filename().string();
+    record.names += (record.names.empty() ? "" : ", ") + path.filename().string();
   }
   return record;
 }
@@ -158,8 +168,9 @@ std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road
                                           : TextureRoadSpec::Anisotropy::isotropic;
   spec.x_max = x_max;
   spec.half_width = half_width;
-  Record data = read_record(road);
+  const std::vector<std::filesystem::path> files = record_files(road);
   road.reject_unknown_keys();
+  Record data = read_record(road, files);
   try {
     RecordTexture record = measure_record_texture(data.lines, data.spacing, data.names);
     std::vector<double> pooled;

@@ -245,6 +245,7 @@ const std::vector<RoadType>& road_types() {
       {"aggregate", "max_chip_size = 0.01\n"},
       {"file", "file = \"profile.csv\"\n"},
       {"surface", "file = \"map.csv\"\n"},
+      {"profile_surface", "file = \"profile.csv\"\n"},
   };
   return types;
 }
@@ -254,7 +255,9 @@ std::string road_heading(const std::string& type) {
   return "type = " + quoted(type);
 }
 
-bool point_road(const std::string& type) { return type != "random_surface" && type != "surface"; }
+bool point_road(const std::string& type) {
+  return type != "random_surface" && type != "surface" && type != "profile_surface";
+}
 
 // The type a library surface file gives.
 std::string surface_type(const fs::path& file) {
