@@ -3,7 +3,8 @@
 # models/surfaces/ and on the measured CAPTIF profiles (the chip seal's two longitudinal records and
 # the fine asphalt's nine transverse lines), and writes
 # out/surface_library/{library.csv, texture_spectra.csv, texture_spectra.gp, texture_spectra.png}:
-# MPD and the texture levels at 5, 10, 20, 40 and 80 mm per surface, and all spectra in one
+# MPD, skewness (per line, detrended) and the texture levels at 5, 10, 20, 40 and 80 mm per
+# surface, and all spectra in one
 # figure. Needs a built tree (bash tools/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,12 +22,13 @@ done
 "$rollnoise" road data/surfaces/captif-transverse/20231114_cpx_demo.csv --out "$out/captif_transverse"
 # texture.csv of each into one long table, and the library table.
 echo "surface,wavelength_m,Ltx_dB" > "$out/texture_spectra.csv.tmp"
-echo "surface,mpd_mm,Ltx_5mm_dB,Ltx_10mm_dB,Ltx_20mm_dB,Ltx_40mm_dB,Ltx_80mm_dB" > "$out/library.csv.tmp"
+echo "surface,mpd_mm,skewness,Ltx_5mm_dB,Ltx_10mm_dB,Ltx_20mm_dB,Ltx_40mm_dB,Ltx_80mm_dB" > "$out/library.csv.tmp"
 for name in "${surfaces[@]}" captif_0 captif_1 captif_transverse; do
   awk -F, -v s="$name" 'NR > 1 { print s "," $1 "," $2 }' "$out/$name/texture.csv" >> "$out/texture_spectra.csv.tmp"
   mpd=$(awk -F': ' '/^  "mpd_m"/ { gsub(/,/, "", $2); printf "%.2f", $2 * 1000 }' "$out/$name/summary.json")
+  skewness=$(awk -F': ' '/^  "skewness"/ { gsub(/,/, "", $2); printf "%+.2f", $2 }' "$out/$name/summary.json")
   level() { awk -F, -v w="$1" 'NR > 1 && ($1 - w) ^ 2 < 1e-12 { printf "%.1f", $2 }' "$out/$name/texture.csv"; }
-  echo "$name,$mpd,$(level 0.005),$(level 0.01),$(level 0.02),$(level 0.04),$(level 0.08)" >> "$out/library.csv.tmp"
+  echo "$name,$mpd,$skewness,$(level 0.005),$(level 0.01),$(level 0.02),$(level 0.04),$(level 0.08)" >> "$out/library.csv.tmp"
 done
 mv "$out/texture_spectra.csv.tmp" "$out/texture_spectra.csv"
 mv "$out/library.csv.tmp" "$out/library.csv"

@@ -43,12 +43,131 @@ constexpr double negative_cut_fraction = 0.3;
 // Most stones a road may hold (bounds the time and memory of the placement).
 constexpr double max_stones = 1 << 25;
 
-struct Checked {
-  double dmax = 0.0, dmin = 0.0, spacing = 0.0, lead_in = 0.0;
+// texture = "rolled": the stone sizes of the grading between dmin and dmax, as intervals of
+// sieve sizes whose mass is spread evenly in log size, and the mix's volume fractions.
+struct RolledMix {
+  struct Interval {
+    double lo = 0.0, hi = 0.0;  // m
+    double mass_per_log = 0.0;  // mass fraction per unit ln d
+    double number = 0.0;        // relative number of stones, ∝ mass_per_log·(lo^-3 − hi^-3)/3
+  };
+  std::vector<Interval> intervals;
+  std::vector<double> cumulative;     // the intervals' cumulative number fractions, ending in 1
+  double stones = 0.0;                // V_c, the coarse aggregate's volume fraction
+  double mastic = 0.0;                // V_m, binder and fine aggregate
+  double depth = 0.0;                 // stones are centred in [−depth, 0] (m)
+  double mastic_level = 0.0;          // z_m (m), below the roller's plane z = 0
 };
 
-Checked check(const AggregateRoadSpec& spec) {
-  Checked k;
+struct Checked {
+  double dmax = 0.0, dmin = 0.0, spacing = 0.0, lead_in = 0.0;
+  double base = 0.0;  // the flat level between the stones (m): the binder's, or the mastic's
+  RolledMix mix;      // texture = "rolled" only
+};
+
+// Densities of the mix's components (kg/m³): typical values for crushed rock and for bitumen.
+constexpr double aggregate_density = 2650.0;
+constexpr double binder_density = 1030.0;
+// The mastic's level is found on this many steps over the layer of one largest stone's thickness.
+constexpr int mastic_steps = 4000;
+// Size nodes per grading interval for the expected stone area at each depth.
+constexpr int size_nodes = 24;
+
+// The mass fraction passing d (0 … 1), linear in ln d between the sieves.
+double passing_at(const AggregateRoadSpec& spec, double d) {
+  const std::vector<double>& s = spec.sieves;
+  const std::vector<double>& p = spec.passing;
+  if (d <= s.front()) return p.front() / 100.0;
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    if (d <= s[i]) {
+      const double t = std::log(d / s[i - 1]) / std::log(s[i] / s[i - 1]);
+      return (p[i - 1] + t * (p[i] - p[i - 1])) / 100.0;
+    }
+  }
+  return 1.0;
+}
+
+// Checks the mix design of texture = "rolled" and fills k.dmax, k.dmin and k.mix (but the
+// mastic level, which needs the shape: rolled_mastic_level).
+void check_mix(const AggregateRoadSpec& spec, Checked& k) {
+  const std::vector<double>& s = spec.sieves;
+  const std::vector<double>& p = spec.passing;
+  if (s.size() < 2) throw_bad("sieves", "must list at least two sieve sizes (m), increasing, such as [0.002, 0.008, 0.0112]");
+  if (p.size() != s.size()) {
+    throw_bad("passing", "has " + std::to_string(p.size()) + " values but sieves has " + std::to_string(s.size()) +
+                             ": give the % by mass passing each sieve");
+  }
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const std::string item = "item " + std::to_string(i + 1) + " (" + format_number(s[i]) + " m)";
+    if (!(s[i] > 0.0 && s[i] <= 1.0) || !std::isfinite(s[i])) {
+      throw_bad("sieves", item + " must be a sieve size in (0, 1] m");
+    }
+    if (i > 0 && !(s[i] > s[i - 1])) {
+      throw_bad("sieves", "must be increasing: " + item + " does not follow " + format_number(s[i - 1]) + " m");
+    }
+    if (!(p[i] >= 0.0 && p[i] <= 100.0) || !std::isfinite(p[i])) {
+      throw_bad("passing", "item " + std::to_string(i + 1) + " is " + format_number(p[i]) +
+                               ": a % by mass passing must be in [0, 100]");
+    }
+    if (i > 0 && p[i] < p[i - 1]) {
+      throw_bad("passing", "must not decrease from one sieve to the next (a grading curve is increasing): item " +
+                               std::to_string(i + 1) + " is " + format_number(p[i]) + " % at " + format_number(s[i]) +
+                               " m after " + format_number(p[i - 1]) + " % at " + format_number(s[i - 1]) + " m");
+    }
+  }
+  if (p.back() != 100.0) {
+    throw_bad("passing", "must reach 100 at the largest sieve (" + format_number(s.back()) + " m): the largest stones "
+                         "pass it (got " + format_number(p.back()) + ")");
+  }
+  require_in("binder_content", spec.binder_content, 0.0, true, 100.0, true, "(0, 100) % by mass of the mix");
+  require_in("air_voids", spec.air_voids, 0.0, true, 100.0, true, "(0, 100) % by volume of the mix");
+  // The largest stone: the first sieve that passes everything.
+  std::size_t top = 0;
+  while (p[top] < 100.0) ++top;
+  if (top == 0) throw_bad("passing", "must be below 100 at the smallest sieve: the grading holds no stones");
+  k.dmax = s[top];
+  k.dmin = spec.min_chip_size.value_or(std::max(0.002, s.front()));
+  if (!(k.dmin >= s.front() && k.dmin < k.dmax) || !std::isfinite(k.dmin)) {
+    throw_bad("min_chip_size", "must be at least the smallest sieve, " + format_number(s.front()) +
+                                   " m, and below the largest stone, " + format_number(k.dmax) + " m (got " +
+                                   format_number(k.dmin) + ")");
+  }
+  const double fines = passing_at(spec, k.dmin);
+  if (!(fines < 1.0)) {
+    throw_bad("passing", "must be below 100 at min_chip_size (" + format_number(k.dmin) + " m): the grading holds no stones");
+  }
+  // The intervals between dmin and dmax, each with the mass the curve gives it.
+  RolledMix& mix = k.mix;
+  std::vector<double> edges{k.dmin};
+  for (double v : s)
+    if (v > k.dmin && v < k.dmax) edges.push_back(v);
+  edges.push_back(k.dmax);
+  double total = 0.0;
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    const double lo = edges[i], hi = edges[i + 1];
+    const double mass = passing_at(spec, hi) - passing_at(spec, lo);
+    RolledMix::Interval in{lo, hi, mass / std::log(hi / lo), 0.0};
+    in.number = in.mass_per_log * (std::pow(lo, -3.0) - std::pow(hi, -3.0)) / 3.0;
+    total += in.number;
+    mix.intervals.push_back(in);
+  }
+  double sum = 0.0;
+  for (const RolledMix::Interval& in : mix.intervals) {
+    sum += in.number / total;
+    mix.cumulative.push_back(sum);
+  }
+  mix.cumulative.back() = 1.0;
+  // Volumes: the solids share 1 − voids in proportion to their masses over their densities.
+  const double binder = spec.binder_content / 100.0;
+  const double voids = spec.air_voids / 100.0;
+  const double v_aggregate = (1.0 - binder) / aggregate_density;
+  const double v_binder = binder / binder_density;
+  const double aggregate = (1.0 - voids) * v_aggregate / (v_aggregate + v_binder);
+  mix.stones = aggregate * (1.0 - fines);
+  mix.mastic = aggregate * fines + (1.0 - voids) * v_binder / (v_aggregate + v_binder);
+}
+
+void check_chips(const AggregateRoadSpec& spec, Checked& k) {
   require_in("max_chip_size", spec.max_chip_size, 0.0, true, 1.0, false, "(0, 1] m");
   k.dmax = spec.max_chip_size;
   k.dmin = spec.min_chip_size.value_or(0.25 * k.dmax);
@@ -57,12 +176,84 @@ Checked check(const AggregateRoadSpec& spec) {
                                    format_number(k.dmin) + ")");
   }
   require_in("grading_exponent", spec.grading_exponent, 0.0, true, 2.0, false, "(0, 2]");
-  require_in("shape_factor", spec.shape_factor, 0.0, true, 1.0, false, "(0, 1] (thickness / width)");
-  require_in("elongation", spec.elongation, 1.0, false, 4.0, false, "[1, 4] (length / width)");
   require_in("coverage", spec.coverage, 0.0, true, 1.0, true, "(0, 1) (fraction of the plane covered)");
   require_in("binder_level", spec.binder_level, 0.0, false, 1.0, true, "[0, 1) (fraction of the largest stone's thickness)");
+}
+
+// The level z_m of the mastic's flat surface between the stones of texture = "rolled" (k.base).
+// A stone of semi-axes a, b, c centred at z_c cuts the plane at height z in an ellipse of area
+// πab(1 − ((z − z_c)/c)²). Centres are uniform in depth, at n stones per m³; those within c of
+// the roller's plane are pushed down to z_c = −c. The expected summed area per unit area at z is
+// then Λ(z) = n·E[πab·(c·(1 − ((z + c)/c)²)₊ + c·(2/3 − G(u)))], u = (z + c)/c clamped to
+// [−1, 1], G(u) = u − u³/3; the stones cover 1 − exp(−Λ) of the plane (a Boolean model), with
+// n = −ln(1 − V_c)/E[stone volume] so that deep in the mix they fill V_c. The mastic, V_m·T per
+// unit area in the layer of one largest stone's thickness T under the plane, fills the pore space
+// exp(−Λ) of that layer from its bottom up; z_m is where it is used up. The expectation runs over
+// the grading (size_nodes per interval), so the level is the mix's, the same for every seed.
+void rolled_mastic_level(const AggregateRoadSpec& spec, Checked& k) {
+  RolledMix& mix = k.mix;
+  struct Node {
+    double a, b, c, weight;
+  };
+  std::vector<Node> nodes;
+  double total = 0.0, mean_volume = 0.0;
+  for (const RolledMix::Interval& in : mix.intervals) {
+    const double step = std::log(in.hi / in.lo) / size_nodes;
+    for (int q = 0; q < size_nodes; ++q) {
+      const double d = in.lo * std::exp((q + 0.5) * step);
+      // Number per unit ln d ∝ mass per unit ln d / d³.
+      const double weight = in.mass_per_log * std::pow(d, -3.0) * step;
+      nodes.push_back({spec.elongation * d / 2.0, d / 2.0, spec.shape_factor * d / 2.0, weight});
+      total += weight;
+    }
+  }
+  for (Node& n : nodes) {
+    n.weight /= total;
+    mean_volume += n.weight * 4.0 / 3.0 * std::numbers::pi * n.a * n.b * n.c;
+  }
+  const double per_volume = -std::log1p(-mix.stones) / mean_volume;
+  const auto covered = [&](double z) {  // Λ(z)
+    double sum = 0.0;
+    for (const Node& n : nodes) {
+      const double u = std::clamp(z / n.c, -1.0, 1.0);
+      sum += n.weight * std::numbers::pi * n.a * n.b * n.c * (2.0 / 3.0 - (u - u * u * u / 3.0));
+    }
+    return per_volume * sum;
+  };
+  const double thickness = spec.shape_factor * k.dmax;  // T
+  const double mastic = mix.mastic * thickness;
+  const double dz = thickness / mastic_steps;
+  double filled = 0.0;
+  double below = std::exp(-covered(-thickness));
+  k.base = 0.0;  // the mastic reaches the plane when the layer's pore space cannot hold it
+  for (int i = 1; i <= mastic_steps; ++i) {
+    const double z = -thickness + dz * i;
+    const double pore = std::exp(-covered(z));
+    const double step = 0.5 * (below + pore) * dz;
+    if (filled + step >= mastic) {
+      k.base = z - dz + dz * (mastic - filled) / step;
+      break;
+    }
+    filled += step;
+    below = pore;
+  }
+  mix.mastic_level = k.base;
+  mix.depth = thickness + spec.shape_factor * k.dmax / 2.0;  // T + c of the largest stone
+}
+
+Checked check(const AggregateRoadSpec& spec) {
+  Checked k;
+  if (spec.texture == AggregateRoadSpec::Texture::rolled) {
+    check_mix(spec, k);
+  } else {
+    check_chips(spec, k);
+  }
+  require_in("shape_factor", spec.shape_factor, 0.0, true, 1.0, false, "(0, 1] (thickness / width)");
+  require_in("elongation", spec.elongation, 1.0, false, 4.0, false, "[1, 4] (length / width)");
   require_in("length", spec.length, 0.0, true, std::numeric_limits<double>::max(), false, "(0, inf) m");
-  k.spacing = spec.sample_spacing.value_or(k.dmax / 20.0);
+  k.spacing = spec.sample_spacing.value_or(spec.texture == AggregateRoadSpec::Texture::rolled
+                                               ? std::min(k.dmax / 20.0, k.dmin / 4.0)
+                                               : k.dmax / 20.0);
   if (!(k.spacing > 0.0) || !std::isfinite(k.spacing)) {
     throw_bad("sample_spacing", "must be a finite number > 0 (got " + format_number(k.spacing) + ")");
   }
@@ -74,13 +265,19 @@ Checked check(const AggregateRoadSpec& spec) {
   if (!(k.lead_in >= 0.0) || !std::isfinite(k.lead_in)) {
     throw_bad("lead_in", "must be a finite number >= 0 (got " + format_number(k.lead_in) + ")");
   }
+  if (spec.texture == AggregateRoadSpec::Texture::rolled) {
+    rolled_mastic_level(spec, k);
+  } else {
+    k.base = spec.binder_level * (spec.shape_factor * k.dmax);
+  }
   return k;
 }
 
 // One stone of the mix: its footprint's centre, semi-axes a (along its angle) and b, thickness
-// semi-axis c, and the angle's cosine and sine.
+// semi-axis c, the angle's cosine and sine, and the height of its centre: its upper surface is
+// zc + c·sqrt(1 − ρ²).
 struct Stone {
-  double x, y, a, b, c, cs, sn;
+  double x, y, a, b, c, cs, sn, zc;
 };
 
 // The stones in order of x, to within `bucket` (a stable counting sort: linear in their number).
@@ -103,8 +300,8 @@ std::vector<Stone> in_order_of_x(const std::vector<Stone>& stones, double x_lo, 
 // The stones whose footprints' centres fall in [x_lo, x_hi) × [−y_half, y_half], drawn from
 // `engine` until their footprints add up to −ln(1 − coverage) of the area (as a Boolean model of
 // that coverage would), four draws per stone in the order x, y, size, angle.
-std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine, double x_lo,
-                                double x_hi, double y_half) {
+std::vector<Stone> place_chips(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine, double x_lo,
+                               double x_hi, double y_half) {
   const double area = (x_hi - x_lo) * 2.0 * y_half;
   const double footprint_needed = -std::log1p(-spec.coverage) * area;
   const double smallest = std::numbers::pi * spec.elongation * k.dmin * k.dmin / 4.0;
@@ -130,9 +327,61 @@ std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k,
     const double b = d / 2.0;
     const double a = spec.elongation * b;
     footprint += std::numbers::pi * a * b;
-    stones.push_back({x, y, a, b, spec.shape_factor * b, std::cos(angle), std::sin(angle)});
+    const double c = spec.shape_factor * b;
+    // Positive: resting on z = 0; negative: cut at the top plane z = T.
+    const double zc = spec.texture == AggregateRoadSpec::Texture::negative
+                          ? spec.shape_factor * k.dmax - (1.0 - negative_cut_fraction) * c
+                          : c;
+    stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});
   }
   return in_order_of_x(stones, x_lo, x_hi, k.spacing);
+}
+
+// texture = "rolled": the stones whose centres fall in [x_lo, x_hi) × [−y_half, y_half] ×
+// [−depth, 0], drawn from `engine` until their volumes add up to −ln(1 − V_c) of that volume (a
+// Boolean model in 3-D of the coarse aggregate's volume fraction), five draws per stone in the
+// order x, y, size, angle, depth. The size: an interval of the grading by its number fraction,
+// then within it the number density ∝ d^−4 (mass spread evenly in log size) by inversion. A
+// stone that would stand above the roller's plane z = 0 is pushed down until its top touches it.
+std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine,
+                                    double x_lo, double x_hi, double y_half) {
+  const RolledMix& mix = k.mix;
+  const double volume_needed = -std::log1p(-mix.stones) * (x_hi - x_lo) * 2.0 * y_half * mix.depth;
+  const double smallest = std::numbers::pi / 6.0 * spec.elongation * spec.shape_factor * std::pow(k.dmin, 3.0);
+  if (!(volume_needed / smallest <= max_stones)) {
+    throw_bad("length", "the road would hold up to " + format_number(volume_needed / smallest) +
+                            " stones, more than the limit of 2^25; use a shorter length (or width)");
+  }
+  std::vector<Stone> stones;
+  double volume = 0.0;
+  const CancellationToken cancel;
+  while (volume < volume_needed) {
+    if (((stones.size() + 1) & 4095u) == 0) cancel.throw_if_cancelled();
+    const double x = x_lo + (x_hi - x_lo) * portable::uniform_closed_open(engine);
+    const double y = -y_half + 2.0 * y_half * portable::uniform_closed_open(engine);
+    const double u = portable::uniform_closed_open(engine);
+    const double angle = std::numbers::pi * portable::uniform_closed_open(engine);
+    const double w = portable::uniform_closed_open(engine);
+    std::size_t i = 0;
+    while (i + 1 < mix.cumulative.size() && u >= mix.cumulative[i]) ++i;
+    const double below = i == 0 ? 0.0 : mix.cumulative[i - 1];
+    const double v = std::clamp((u - below) / (mix.cumulative[i] - below), 0.0, 1.0);
+    const RolledMix::Interval& in = mix.intervals[i];
+    const double lo3 = std::pow(in.lo, -3.0), hi3 = std::pow(in.hi, -3.0);
+    const double d = std::clamp(std::pow(lo3 - v * (lo3 - hi3), -1.0 / 3.0), in.lo, in.hi);
+    const double b = d / 2.0;
+    const double a = spec.elongation * b;
+    const double c = spec.shape_factor * b;
+    volume += 4.0 / 3.0 * std::numbers::pi * a * b * c;
+    stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), -mix.depth * w});
+  }
+  return in_order_of_x(stones, x_lo, x_hi, k.spacing);
+}
+
+std::vector<Stone> place_stones(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine, double x_lo,
+                                double x_hi, double y_half) {
+  return spec.texture == AggregateRoadSpec::Texture::rolled ? place_mix_stones(spec, k, engine, x_lo, x_hi, y_half)
+                                                            : place_chips(spec, k, engine, x_lo, x_hi, y_half);
 }
 
 // The columns of a grid y = (j − half_y) h that are held: j = first .. first + count − 1.
@@ -148,8 +397,11 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
                      std::size_t first, std::size_t x_count, std::size_t half_y, Columns held, std::vector<double>& z) {
   const double h = k.spacing;
   const std::size_t y_count = held.count;
-  const double thickness = spec.shape_factor * k.dmax;  // T
-  const bool negative = spec.texture == AggregateRoadSpec::Texture::negative;
+  // The plane the stones are cut flat at: the top plane z = T of the negative texture, the
+  // roller's plane z = 0 of the rolled mix; none for the positive texture.
+  const double ceiling = spec.texture == AggregateRoadSpec::Texture::negative ? spec.shape_factor * k.dmax
+                         : spec.texture == AggregateRoadSpec::Texture::rolled ? 0.0
+                                                                              : std::numeric_limits<double>::infinity();
   const double origin = h * static_cast<double>(first);
   // Raising the grid to up to 2^25 stones takes tens of seconds: polled every 4096 stones too.
   const CancellationToken cancel;
@@ -158,9 +410,9 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
   for (const Stone& s : stones) {
     if ((++raised & 4095u) == 0) cancel.throw_if_cancelled();
     const double x = s.x - origin, y = s.y, a = s.a, b = s.b, c = s.c, cs = s.cs, sn = s.sn;
-    // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); positive:
-    // resting on z = 0; negative: cut at the top plane z = T.
-    const double z_c = negative ? thickness - (1.0 - negative_cut_fraction) * c : c;
+    // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); negative: cut
+    // at the top plane z = T.
+    const double z_c = s.zc;
     const double i_lo = std::max(0.0, std::ceil((x - a) / h));
     const double i_hi = std::min(static_cast<double>(x_count - 1), std::floor((x + a) / h));
     const double j_lo = std::max(static_cast<double>(held.first), std::ceil((y - a) / h + static_cast<double>(half_y)));
@@ -180,7 +432,7 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
       const __m128d v_dx_cs = _mm_set1_pd(dx_cs), v_dx_sn = _mm_set1_pd(dx_sn), v_sn = _mm_set1_pd(sn),
                     v_cs = _mm_set1_pd(cs), v_a = _mm_set1_pd(a), v_b = _mm_set1_pd(b), v_h = _mm_set1_pd(h),
                     v_y = _mm_set1_pd(y), v_c = _mm_set1_pd(c), v_zc = _mm_set1_pd(z_c),
-                    v_one = _mm_set1_pd(1.0), v_t = _mm_set1_pd(thickness),
+                    v_one = _mm_set1_pd(1.0), v_t = _mm_set1_pd(ceiling),
                     v_half = _mm_set1_pd(static_cast<double>(half_y));
       for (; j + 1 <= j_last; j += 2) {
         const __m128d v_j = _mm_set_pd(static_cast<double>(j + 1), static_cast<double>(j));
@@ -189,7 +441,7 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
         const __m128d across = _mm_div_pd(_mm_add_pd(v_dx_sn, _mm_mul_pd(dy, v_cs)), v_b);
         const __m128d rho2 = _mm_add_pd(_mm_mul_pd(along, along), _mm_mul_pd(across, across));
         __m128d top = _mm_add_pd(v_zc, _mm_mul_pd(v_c, _mm_sqrt_pd(_mm_sub_pd(v_one, rho2))));
-        if (negative) top = _mm_min_pd(top, v_t);
+        top = _mm_min_pd(top, v_t);
         double* cells = row + (j - held.first);
         const __m128d cell = _mm_loadu_pd(cells);
         const __m128d inside = _mm_cmplt_pd(rho2, v_one);
@@ -204,7 +456,7 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
         const double rho2 = along * along + across * across;
         if (rho2 >= 1.0) continue;
         double top = z_c + c * std::sqrt(1.0 - rho2);
-        if (negative) top = std::min(top, thickness);
+        top = std::min(top, ceiling);
         double& cell = row[j - held.first];
         cell = std::max(cell, top);
       }
@@ -224,7 +476,7 @@ std::vector<double> raw_heights(const AggregateRoadSpec& spec, const Checked& k,
   std::mt19937_64 engine(spec.seed);
   const std::vector<Stone> stones =
       place_stones(spec, k, engine, -reach, h * static_cast<double>(x_count - 1) + reach, h * static_cast<double>(half_y) + reach);
-  std::vector<double> z(x_count * (2 * half_y + 1), spec.binder_level * (spec.shape_factor * k.dmax));
+  std::vector<double> z(x_count * (2 * half_y + 1), k.base);
   raise_to_stones(spec, k, stones, 0, x_count, half_y, Columns::all(half_y), z);
   mean = 0.0;
   for (double v : z) mean += v;
@@ -262,17 +514,50 @@ std::size_t points_to(double extent, double spacing, const char* key) {
 
 }  // namespace
 
+namespace {
+
+// A TOML list of numbers (integers or floats), required.
+std::vector<double> read_numbers(const ConfigTable& road, const char* key, const std::string& what) {
+  const toml::node* node = road.raw(key);
+  if (node == nullptr) road.fail(key, "is required for texture = \"rolled\": " + what);
+  const toml::array* list = node->as_array();
+  if (list == nullptr) road.fail(key, "must be a list of numbers: " + what);
+  std::vector<double> values;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& item = *list->get(i);
+    if (const auto* f = item.as_floating_point()) {
+      values.push_back(f->get());
+    } else if (const auto* n = item.as_integer()) {
+      values.push_back(static_cast<double>(n->get()));
+    } else {
+      road.fail(key, "item " + std::to_string(i + 1) + " is not a number: " + what);
+    }
+  }
+  return values;
+}
+
+}  // namespace
+
 void read_aggregate_keys(const ConfigTable& road, AggregateRoadSpec& spec, bool surface, double default_length) {
-  spec.max_chip_size = road.positive("max_chip_size");
+  const std::string texture = road.choice("texture", {"positive", "negative", "rolled"}, "positive");
+  spec.texture = texture == "rolled"     ? AggregateRoadSpec::Texture::rolled
+                 : texture == "negative" ? AggregateRoadSpec::Texture::negative
+                                         : AggregateRoadSpec::Texture::positive;
+  if (spec.texture == AggregateRoadSpec::Texture::rolled) {
+    // The mix design; the stones' largest size, grading, density and the mastic's level follow.
+    spec.sieves = read_numbers(road, "sieves", "the sieve sizes of the grading in m, increasing");
+    spec.passing = read_numbers(road, "passing", "the % by mass passing each sieve");
+    spec.binder_content = road.number("binder_content");
+    spec.air_voids = road.number("air_voids");
+  } else {
+    spec.max_chip_size = road.positive("max_chip_size");
+    spec.grading_exponent = road.positive("grading_exponent", spec.grading_exponent);
+    spec.coverage = road.positive("coverage", spec.coverage);
+    spec.binder_level = road.non_negative("binder_level", spec.binder_level);
+  }
   if (road.contains("min_chip_size")) spec.min_chip_size = road.positive("min_chip_size");
-  spec.grading_exponent = road.positive("grading_exponent", spec.grading_exponent);
   spec.shape_factor = road.positive("shape_factor", spec.shape_factor);
   spec.elongation = road.positive("elongation", spec.elongation);
-  spec.coverage = road.positive("coverage", spec.coverage);
-  spec.binder_level = road.non_negative("binder_level", spec.binder_level);
-  spec.texture = road.choice("texture", {"positive", "negative"}, "positive") == "negative"
-                     ? AggregateRoadSpec::Texture::negative
-                     : AggregateRoadSpec::Texture::positive;
   spec.seed = static_cast<std::uint64_t>(road.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
   spec.length = road.positive("length", default_length);
   if (surface) spec.width = road.positive("width", 0.5);
@@ -436,7 +721,7 @@ class TiledAggregateSurface final : public RoadSurface {
 
   Tile make_tile(std::size_t index) const {
     const Columns held = index == 0 ? Columns::all(half_y_) : strip_;
-    std::vector<double> z((tile_samples_ + 1) * held.count, spec_.binder_level * (spec_.shape_factor * k_.dmax));
+    std::vector<double> z((tile_samples_ + 1) * held.count, k_.base);
     const std::size_t first = index * tile_samples_;
     for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
       raise_to_stones(spec_, k_, stones_of(neighbour), first, tile_samples_ + 1, half_y_, held, z);

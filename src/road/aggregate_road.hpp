@@ -25,6 +25,18 @@
 //    common top plane z = T, as by the roller: each stone's upper cap is cut flat at that plane
 //    (its ellipsoid would reach 0.3 c above it), giving a flat top surface with the voids and
 //    grooves between stones below it, down to the binder.
+//    texture = "rolled" (a dense mix laid by a paver and compacted by steel rollers; keys sieves,
+//    passing, binder_content, air_voids instead of max_chip_size, grading_exponent, coverage,
+//    binder_level): the stones (sizes min_chip_size ... the first sieve passing 100 %, drawn from
+//    the sieve curve, linear in log size between sieves) lie at uniform random depths in the mix,
+//    at the coarse aggregate's volume fraction (a Boolean model in 3-D); the roller pushes every
+//    stone that would stand above the common top plane z = 0 down until its top touches it. The
+//    mastic (binder and the aggregate finer than min_chip_size) fills the pore space between the
+//    stones from below; the layer of one largest stone's thickness T under the plane holds its
+//    share of the mix's mastic, V_m·T, and the mastic's flat surface z_m is where that volume is
+//    used up (from the expected stone area at each depth, so z_m is the mix's, not the seed's).
+//    Above z_m the space between the stones is open: the air voids, and the room the convex stone
+//    tops leave under the roller's plane.
 //  - Heights: the visible upper surface, max(z_b, max over stones of the stone's upper surface),
 //    minus its mean over the generated grid (r = 0 is the mean level), times a raised-cosine
 //    lead-in window over the first lead_in metres (r = 0 for x < 0, the flat lead-in).
@@ -37,12 +49,14 @@
 // elongation (a/b, in [1, 4], default 1), coverage (in (0, 1), default 0.85), binder_level (in
 // [0, 1), default 0.1) — the defaults are the calibration to the CAPTIF chip seal (with
 // max_chip_size = 0.0132), see the docs —
-// texture = "positive" (default) | "negative", seed (default 1), length (m, default 100 for a
+// texture = "positive" (default) | "negative" | "rolled" (with sieves, passing, binder_content,
+// air_voids; min_chip_size then defaults to 2 mm), seed (default 1), length (m, default 100 for a
 // profile, 5 for a surface), width (m, surface only, default 0.5), sample_spacing (m, default
 // max_chip_size / 20, at most min_chip_size / 4), lead_in (m, default 4 · max_chip_size).
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "road/sampled_road.hpp"
 
@@ -51,7 +65,7 @@ namespace rollnoise {
 class ConfigTable;
 
 struct AggregateRoadSpec {
-  enum class Texture { positive, negative };
+  enum class Texture { positive, negative, rolled };
 
   double max_chip_size = 0.0;                 // m, > 0
   std::optional<double> min_chip_size;        // m, (0, max_chip_size]; default 0.25 max
@@ -66,6 +80,14 @@ struct AggregateRoadSpec {
   std::uint64_t seed = 1;
   double length = 100.0;    // m
   double width = 0.5;       // m (surface)
+  // texture = rolled (a dense mix laid by a paver and compacted by steel rollers): its mix design.
+  // max_chip_size, grading_exponent, coverage and binder_level are not used: the largest stone is
+  // the smallest sieve that passes 100 %, the grading is the sieve curve, and the stones' density
+  // and the mastic's level follow from the volumes of the mix.
+  std::vector<double> sieves;    // m, increasing
+  std::vector<double> passing;   // % by mass passing each sieve, not decreasing, 100 at the last
+  double binder_content = 0.0;   // % by mass of the mix, (0, 100)
+  double air_voids = 0.0;        // % by volume of the mix, (0, 100)
   double x_max = 0.0;       // the run's largest x (m)
   double half_width = 0.0;  // the run's largest |y| (m) (surface)
 };

@@ -9,6 +9,31 @@
 
 namespace rollnoise {
 
+double detrended_skewness(const std::vector<double>& line) {
+  const std::size_t n = line.size();
+  if (n < 3) return 0.0;
+  // The least-squares line z = m + s·(i − centre) over the sample index i.
+  const double centre = 0.5 * static_cast<double>(n - 1);
+  double mean = 0.0, moment = 0.0, spread = 0.0;
+  for (std::size_t i = 0; i < n; ++i) mean += line[i];
+  mean /= static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) - centre;
+    moment += t * (line[i] - mean);
+    spread += t * t;
+  }
+  const double slope = moment / spread;
+  double m2 = 0.0, m3 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = line[i] - mean - slope * (static_cast<double>(i) - centre);
+    m2 += r * r;
+    m3 += r * r * r;
+  }
+  m2 /= static_cast<double>(n);
+  m3 /= static_cast<double>(n);
+  return m2 > 0.0 ? m3 / std::pow(m2, 1.5) : 0.0;
+}
+
 ProfileAnalysis analyse_profile(const std::vector<std::vector<double>>& lines, double spacing_m) {
   if (lines.empty()) throw std::invalid_argument("analyse_profile: no line");
   for (const auto& line : lines)
@@ -22,6 +47,7 @@ ProfileAnalysis analyse_profile(const std::vector<std::vector<double>>& lines, d
     for (double z : line) squares += (z - mean) * (z - mean);
   }
   out.rms_m = std::sqrt(squares / static_cast<double>(lines.size() * lines.front().size()));
+  for (const auto& line : lines) out.skewness += detrended_skewness(line) / static_cast<double>(lines.size());
 
   // MPD needs one 100 mm segment; a shorter profile simply has none (the caller says so).
   constexpr double segment_m = 0.1;

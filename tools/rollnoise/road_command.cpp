@@ -300,6 +300,7 @@ int run_road(const RoadOptions& options) {
   summary["paths_outside_case_folder"] = road.paths_outside_folder;
   if (!road.about.is_null()) summary["about"] = road.about;
   summary["rms_m"] = analysis.rms_m;
+  summary["skewness"] = analysis.skewness;
   if (analysis.mpd) {
     summary["mpd_m"] = analysis.mpd->mpd_m;
     summary["etd_m"] = analysis.mpd->etd_m;
@@ -334,8 +335,8 @@ int run_road(const RoadOptions& options) {
   staged.commit();
   char mpd[32] = "n/a";
   if (analysis.mpd) std::snprintf(mpd, sizeof mpd, "%.2f mm", analysis.mpd->mpd_m * 1000.0);
-  std::printf("rollnoise: wrote %s (road.csv, texture.csv, summary.json and plots): MPD %s, RMS %.2f mm\n",
-              out.string().c_str(), mpd, analysis.rms_m * 1000.0);
+  std::printf("rollnoise: wrote %s (road.csv, texture.csv, summary.json and plots): MPD %s, RMS %.2f mm, skewness %+.2f\n",
+              out.string().c_str(), mpd, analysis.rms_m * 1000.0, analysis.skewness);
   return 0;
 }
 
