@@ -10,6 +10,8 @@ namespace {
 // Set by the handlers (async-signal-safe: a lock-free atomic store), read by the tokens.
 std::atomic<int> signal_received{0};
 static_assert(std::atomic<int>::is_always_lock_free, "the signal flag must be lock-free");
+// The RunCancellation objects alive (the Python module's runs on several threads).
+std::atomic<int> runs_cancellable{0};
 
 extern "C" void on_stop_signal(int signal_number) {
   signal_received.store(signal_number, std::memory_order_relaxed);
@@ -55,6 +57,18 @@ SignalCancellation::~SignalCancellation() {
   if (watchdog_.joinable()) watchdog_.join();
   sigaction(SIGINT, &previous_int_, nullptr);
   sigaction(SIGTERM, &previous_term_, nullptr);
+}
+
+RunCancellation::RunCancellation() noexcept {
+  if (runs_cancellable.fetch_add(1, std::memory_order_acq_rel) == 0) signal_received.store(0, std::memory_order_relaxed);
+}
+
+RunCancellation::~RunCancellation() {
+  if (runs_cancellable.fetch_sub(1, std::memory_order_acq_rel) == 1) signal_received.store(0, std::memory_order_relaxed);
+}
+
+void RunCancellation::cancel(int signal_number) const noexcept {
+  signal_received.store(signal_number, std::memory_order_relaxed);
 }
 
 }  // namespace rollnoise

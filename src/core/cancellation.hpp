@@ -69,4 +69,21 @@ class SignalCancellation {
   std::jthread watchdog_;
 };
 
+// Stops the runs of this process from code rather than from a signal handler: the Python module
+// calls cancel() when Python has a KeyboardInterrupt pending (Python's own SIGINT handler takes
+// the signal there, so SignalCancellation is not installed). cancel() sets the flag the default
+// CancellationToken watches, so every run in the process stops, as with Ctrl-C. The flag is
+// cleared when the first RunCancellation of a quiet process is made and when the last one ends,
+// so a stop does not carry over to the next run. No watchdog: a stretch that polls no token
+// runs to its end.
+class RunCancellation {
+ public:
+  RunCancellation() noexcept;
+  ~RunCancellation();
+  RunCancellation(const RunCancellation&) = delete;
+  RunCancellation& operator=(const RunCancellation&) = delete;
+
+  void cancel(int signal_number = SIGINT) const noexcept;
+};
+
 }  // namespace rollnoise

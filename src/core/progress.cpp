@@ -13,18 +13,33 @@ bool ProgressReporter::wanted() {
   return !in_ci && ::isatty(STDERR_FILENO) == 1;
 }
 
-ProgressReporter::ProgressReporter(std::string label, std::size_t total, CancellationToken cancel, bool shown)
+ProgressReporter::ProgressReporter(std::string label, std::size_t total, CancellationToken cancel, bool shown,
+                                   ProgressSink* sink)
     : label_(std::move(label)),
       cancel_(cancel),
+      sink_(sink),
       total_(total),
       enabled_(shown && wanted()),
       start_(std::chrono::steady_clock::now()),
-      last_(start_) {}
+      last_(start_) {
+  last_sink_ = start_;
+  if (sink_) sink_->report(label_, 0, total_);
+}
 
-ProgressReporter::~ProgressReporter() { finish(); }
+ProgressReporter::~ProgressReporter() {
+  sink_ = nullptr;  // a run cut off by an error has not finished
+  finish();
+}
 
 void ProgressReporter::update(std::size_t done) {
   cancel_.throw_if_cancelled();
+  if (sink_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_sink_ >= std::chrono::milliseconds(100)) {
+      last_sink_ = now;
+      sink_->report(label_, done, total_);
+    }
+  }
   if (!enabled_ || (done & 255u) != 0) return;
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
@@ -39,6 +54,10 @@ void ProgressReporter::update(std::size_t done) {
 }
 
 void ProgressReporter::finish() {
+  if (sink_) {
+    sink_->report(label_, total_, total_);
+    sink_ = nullptr;
+  }
   if (shown_) {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();

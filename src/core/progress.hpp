@@ -10,12 +10,26 @@
 
 namespace rollnoise {
 
+// Told how a run goes, for a caller that shows progress its own way (the Python module's
+// callback). report() is called from the thread that runs the loop, at most about ten times a
+// second per reporter and once when it finishes; it must be quick and must not throw.
+class ProgressSink {
+ public:
+  virtual ~ProgressSink() = default;
+  // `stage`: the reporter's label ("simulate case.toml", "radiation case.toml", ...); `done` of
+  // `total` steps.
+  virtual void report(const std::string& stage, std::size_t done, std::size_t total) noexcept = 0;
+};
+
 class ProgressReporter {
  public:
   // `cancel`: the token update() polls (by default the one SignalCancellation drives).
   // `shown` false: never drawn, but update() still polls `cancel`, so that a loop run quietly
   // (a study's cases, which draw one line of their own) still stops on Ctrl-C.
-  ProgressReporter(std::string label, std::size_t total, CancellationToken cancel = {}, bool shown = true);
+  // `sink` (optional, must outlive the reporter) is told of the progress whether or not it is
+  // drawn.
+  ProgressReporter(std::string label, std::size_t total, CancellationToken cancel = {}, bool shown = true,
+                   ProgressSink* sink = nullptr);
   ~ProgressReporter();
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
@@ -31,6 +45,8 @@ class ProgressReporter {
  private:
   std::string label_;
   CancellationToken cancel_;
+  ProgressSink* sink_;
+  std::chrono::steady_clock::time_point last_sink_;
   std::size_t total_;
   bool enabled_;
   bool shown_ = false;

@@ -14,6 +14,7 @@
 namespace rollnoise {
 
 class CaseFile;
+class ProgressSink;
 
 struct CaseRunOptions {
   // Progress bars on a terminal (ProgressReporter); a study draws its own instead.
@@ -31,6 +32,9 @@ struct CaseRunOptions {
   // the mode fits, the radiation's anchor operators); std::nullopt: none. The command line
   // resolves --cache and --no-cache into this (usable_cache_folder).
   std::optional<std::filesystem::path> cache = default_cache_directory();
+  // Told of the run's progress (the contact loop, the radiation's anchors), drawn or not; none:
+  // nobody. Must outlive the run.
+  ProgressSink* progress_sink = nullptr;
 };
 
 struct CaseResult {

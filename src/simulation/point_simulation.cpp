@@ -53,8 +53,9 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
   }
   // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
   ProgressReporter progress("simulate " + fs::path(file.path()).filename().string(), settings.steps() + 1, {},
-                            options.progress);
+                            options.progress, options.progress_sink);
   const ContactTrace trace = simulate_point_contact(*model, *road, settings, &progress);
+  progress.finish();
 
   write_contact_csv(staged.staging() / "contact.csv", trace);
   if (plots) {

@@ -266,7 +266,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
 
   StagedOutputDirectory staged(out);
   std::optional<ProgressReporter> progress;
-  if (options.progress) progress.emplace("simulate " + fs::path(file.path()).filename().string(), steps + 1);
+  if (options.progress || options.progress_sink)
+    progress.emplace("simulate " + fs::path(file.path()).filename().string(), steps + 1, CancellationToken{},
+                     options.progress, options.progress_sink);
   TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
                       settings.road_sampling};
   run.keep_fields = false;  // streamed through the step outputs below
@@ -290,6 +292,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   }
   sound.radiation.sample_rate_hz = 1.0 / dt;
   sound.cache_folder = options.cache;
+  sound.progress_sink = options.progress_sink;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
                                       settings.static_load, {}, {}, belt_psd.get(), {}, true, {}};
   // A long run's radiation takes the tread velocity as the run makes it, in blocks, instead of

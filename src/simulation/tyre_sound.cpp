@@ -272,7 +272,8 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   StageTimes stages;
   const std::unique_ptr<TyreRadiation> radiation = make_radiation(settings);
   // Always there, drawn only when asked: its updates poll Ctrl-C also in a study's quiet cases.
-  ProgressReporter bar("radiation " + source, radiation->anchors(sample_rate).size(), {}, progress);
+  ProgressReporter bar("radiation " + source, radiation->anchors(sample_rate).size(), {}, progress,
+                       settings.progress_sink);
   std::optional<RadiationCache> cache;
   if (settings.cache_folder) cache.emplace(*settings.cache_folder);
   const RadiatedSound sound = radiation->radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
@@ -314,7 +315,8 @@ void TyreSoundStream::push(std::span<const double> tread_velocity) {
     // The first sample: the radiating body is known (the caller set the settings' deformation).
     radiation_ = make_radiation(settings_);
     if (settings_.cache_folder) cache_ = std::make_unique<RadiationCache>(*settings_.cache_folder);
-    ProgressReporter bar("radiation " + source_, radiation_->anchors(sample_rate_).size(), {}, progress_);
+    ProgressReporter bar("radiation " + source_, radiation_->anchors(sample_rate_).size(), {}, progress_,
+                         settings_.progress_sink);
     stream_ = std::make_unique<TyreRadiationStream>(*radiation_, static_cast<Eigen::Index>(tread_velocity.size()), samples_,
                                                     sample_rate_, &bar, cache_.get());
     bar.finish();

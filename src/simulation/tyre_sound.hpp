@@ -23,6 +23,7 @@ namespace rollnoise {
 class ConfigTable;
 class PointAveragedPsd;
 class ProgressReporter;
+class ProgressSink;
 class RadiationCache;
 struct TyreBudget;
 
@@ -36,6 +37,8 @@ struct TyreSoundSettings {
   // The cache of the radiation's anchor operators (radiation/radiation_cache.hpp): none, or
   // the cache folder (core/cache_folder.hpp). Not a case key: the command line chooses it.
   std::optional<std::filesystem::path> cache_folder;
+  // Told of the radiation's progress over its anchors (core/progress.hpp); not a case key.
+  ProgressSink* progress_sink = nullptr;
 };
 
 // [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
