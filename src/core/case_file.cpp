@@ -18,12 +18,15 @@ toml::table parse_toml_file(const fs::path& path) {
   if (!in) throw InputError(path.string(), "", "cannot be opened for reading");
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  return parse_toml_text(buffer.str(), path.string());
+}
+
+toml::table parse_toml_text(const std::string& text, const std::string& source) {
   try {
-    return toml::parse(text, path.string());
+    return toml::parse(text, source);
   } catch (const toml::parse_error& error) {
     const auto& begin = error.source().begin;
-    throw InputError(path.string(),
+    throw InputError(source,
                      "line " + std::to_string(begin.line) + ", column " +
                          std::to_string(begin.column),
                      "malformed TOML: " + std::string(error.description()));
@@ -184,7 +187,11 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
 }
 
 CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& overrides) {
-  CaseFile file(path, parse_toml_file(path));
+  return from_table(path, parse_toml_file(path), overrides);
+}
+
+CaseFile CaseFile::from_table(const fs::path& path, toml::table root, const std::vector<std::string>& overrides) {
+  CaseFile file(path, std::move(root));
   // Overrides first, so that --set tyre.file=... picks the model file (and --set
   // road.surface=... the surface), and so that --set road.key=... overrides the library file.
   file.apply_overrides(overrides, "");
@@ -193,15 +200,12 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
   return file;
 }
 
-CaseFile CaseFile::from_table(const fs::path& path, toml::table root) {
-  CaseFile file(path, std::move(root));
-  file.merge_library_file("tyre", "file", "models/tyres", "model");
-  file.merge_library_file("road", "surface", "models/surfaces", "surface");
-  return file;
+CaseFile CaseFile::load_model(const fs::path& path, const std::vector<std::string>& overrides) {
+  return model_from_table(path, parse_toml_file(path), overrides);
 }
 
-CaseFile CaseFile::load_model(const fs::path& path, const std::vector<std::string>& overrides) {
-  CaseFile file(path, parse_toml_file(path));
+CaseFile CaseFile::model_from_table(const fs::path& path, toml::table root, const std::vector<std::string>& overrides) {
+  CaseFile file(path, std::move(root));
   file.apply_overrides(overrides, "");
   return file;
 }

@@ -17,6 +17,9 @@ namespace rollnoise {
 // Parses a TOML file; a missing, unreadable or malformed file is an InputError naming the
 // file (and line and column for syntax errors).
 toml::table parse_toml_file(const std::filesystem::path& path);
+// Parses TOML text; `source` names it in messages (a malformed text is an InputError naming the
+// line and column, as for a file).
+toml::table parse_toml_text(const std::string& text, const std::string& source);
 
 class CaseFile {
  public:
@@ -31,10 +34,18 @@ class CaseFile {
                        const std::vector<std::string>& overrides = {});
   // A case assembled in memory (a study's case): `root` as if read from `path` (whose folder
   // the library files it names are found from), then merged as load() merges them.
-  static CaseFile from_table(const std::filesystem::path& path, toml::table root);
+  // A case assembled in memory (a study's case, a case given to the Python module as text or a
+  // dict): `root` as if read from `path` (whose folder the library files it names are found
+  // from; a bare name: the current folder), with `overrides` applied, then merged as load()
+  // merges them.
+  static CaseFile from_table(const std::filesystem::path& path, toml::table root,
+                             const std::vector<std::string>& overrides = {});
   // A model file: the keys of a [tyre] table at the top level.
   static CaseFile load_model(const std::filesystem::path& path,
                              const std::vector<std::string>& overrides = {});
+  // A model file assembled in memory, as from_table for a case.
+  static CaseFile model_from_table(const std::filesystem::path& path, toml::table root,
+                                   const std::vector<std::string>& overrides = {});
 
   const std::filesystem::path& path() const noexcept { return path_; }
   std::string name() const { return path_.string(); }
