@@ -135,13 +135,18 @@ LoadedProfile load_profile_file(const std::filesystem::path& path) {
                        "x and z_1, z_2, ...), an HDF5 height map (/x, /y, /z), a laser profilometer export "
                        "or line laser profiles (CSV line pairs: time stamp and positions, time stamp and heights)");
   }
+  clean_profile_lines(out);
+  return out;
+}
+
+void clean_profile_lines(LoadedProfile& out) {
   for (std::size_t line = 0; line < out.z_lines.size(); ++line) {
-    const std::string where = out.z_lines.size() == 1 ? source : source + " (line " + std::to_string(line + 1) + ")";
+    const std::string where =
+        out.z_lines.size() == 1 ? out.source : out.source + " (line " + std::to_string(line + 1) + ")";
     const LineCleaning cleaning = clean_measured_line(out.z_lines[line], out.spacing_m, where);
     out.dropouts += cleaning.dropouts;
     out.spikes += cleaning.spikes;
   }
-  return out;
 }
 
 }  // namespace rollnoise

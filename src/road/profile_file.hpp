@@ -43,6 +43,10 @@ LoadedProfile load_profile_file(const std::filesystem::path& path);
 LoadedProfile make_uniform_profile(const std::vector<double>& x, const std::vector<std::vector<double>>& z_lines,
                                    std::vector<double> y, const std::string& source);
 
+// The cleaning step of load_profile_file on its own: every line of `profile` cleaned per
+// ISO 13473-1 (dropouts filled, spikes replaced), counted in `dropouts` and `spikes`.
+void clean_profile_lines(LoadedProfile& profile);
+
 // Whether the increasing `x` is uniform in the sense above.
 bool is_uniformly_spaced(const std::vector<double>& x);
 
