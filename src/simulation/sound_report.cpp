@@ -34,12 +34,9 @@ void plot_spectra(const fs::path& dir, const std::vector<ReceiverSignal>& signal
 
 }  // namespace
 
-nlohmann::json write_sound_report(const fs::path& dir, const std::vector<ReceiverSignal>& signals,
-                                  const std::string& source, bool plot, std::vector<BandSpectrum>* spectra,
-                                  PlotBatch* batch) {
-  std::ofstream csv_file(dir / "spectrum.csv", std::ios::binary);
-  csv_file << "receiver,band_hz,Lp_dB,LpA_dB\n";
-  nlohmann::json levels = nlohmann::json::object();
+SoundReport sound_report(const std::vector<ReceiverSignal>& signals, const std::string& source) {
+  SoundReport report;
+  report.levels = nlohmann::json::object();
   for (const ReceiverSignal& r : signals) {
     const std::span<const double> p(r.pressure.data(), static_cast<std::size_t>(r.pressure.size()));
     const double duration = static_cast<double>(p.size()) / r.sample_rate;
@@ -49,26 +46,42 @@ nlohmann::json write_sound_report(const fs::path& dir, const std::vector<Receive
     // (up to half a second, never more than a tenth of the record).
     bands.f_high = std::min({10000.0, r.sample_rate / 4.5, r.highest_band_hz});
     bands.settle_time = std::min(0.5, 0.1 * duration);
-    BandSpectrum spectrum;
     try {
-      spectrum = band_spectrum(p, r.sample_rate, bands);
+      report.spectra.push_back(band_spectrum(p, r.sample_rate, bands));
     } catch (const InputError& error) {
       throw InputError(source, r.name, "too short or too coarsely sampled for band levels: " + error.problem());
     }
+    report.levels[r.name] = {{"Leq_dB", leq_db(p)},
+                             {"LAeq_dB", laeq_db(p, r.sample_rate)},
+                             {"LAFmax_dB", lafmax_db(p, r.sample_rate)},
+                             {"sample_rate_hz", r.sample_rate},
+                             {"duration_s", duration}};
+  }
+  return report;
+}
+
+void write_sound_report(const fs::path& dir, const std::vector<ReceiverSignal>& signals, const SoundReport& report,
+                        bool plot, PlotBatch* batch) {
+  std::ofstream csv_file(dir / "spectrum.csv", std::ios::binary);
+  csv_file << "receiver,band_hz,Lp_dB,LpA_dB\n";
+  for (std::size_t i = 0; i < signals.size(); ++i) {
+    const BandSpectrum& spectrum = report.spectra[i];
     for (std::size_t b = 0; b < spectrum.lp_db.size(); ++b) {
-      csv_file << r.name << ',' << spectrum.labels[b] << ',' << format_number(spectrum.lp_db[b]) << ','
+      csv_file << signals[i].name << ',' << spectrum.labels[b] << ',' << format_number(spectrum.lp_db[b]) << ','
                << format_number(spectrum.lpa_db[b]) << '\n';
     }
-    if (spectra) spectra->push_back(spectrum);
-    levels[r.name] = {{"Leq_dB", leq_db(p)},
-                      {"LAeq_dB", laeq_db(p, r.sample_rate)},
-                      {"LAFmax_dB", lafmax_db(p, r.sample_rate)},
-                      {"sample_rate_hz", r.sample_rate},
-                      {"duration_s", duration}};
   }
   close_output_file(csv_file, dir / "spectrum.csv");
   if (plot) plot_spectra(dir, signals, batch);
-  return levels;
+}
+
+nlohmann::json write_sound_report(const fs::path& dir, const std::vector<ReceiverSignal>& signals,
+                                  const std::string& source, bool plot, std::vector<BandSpectrum>* spectra,
+                                  PlotBatch* batch) {
+  SoundReport report = sound_report(signals, source);
+  write_sound_report(dir, signals, report, plot, batch);
+  if (spectra) spectra->insert(spectra->end(), report.spectra.begin(), report.spectra.end());
+  return report.levels;
 }
 
 }  // namespace rollnoise

@@ -24,6 +24,18 @@ struct ReceiverSignal {
   double highest_band_hz = 10000.0;
 };
 
+// The band spectra (in the order of `signals`) and the levels of the signals, computed as
+// write_sound_report writes them; nothing is written.
+struct SoundReport {
+  std::vector<BandSpectrum> spectra;
+  nlohmann::json levels;  // {RECEIVER: {"Leq_dB", "LAeq_dB", "LAFmax_dB", "sample_rate_hz", "duration_s"}}
+};
+SoundReport sound_report(const std::vector<ReceiverSignal>& signals, const std::string& source);
+
+// spectrum.csv (and the plot) of a report made of `signals`.
+void write_sound_report(const std::filesystem::path& dir, const std::vector<ReceiverSignal>& signals,
+                        const SoundReport& report, bool plot = true, PlotBatch* batch = nullptr);
+
 // Writes spectrum.csv and the spectrum plot into `dir` and returns
 // {RECEIVER: {"Leq_dB", "LAeq_dB", "LAFmax_dB", "sample_rate_hz", "duration_s"}}.
 // `source` names the input in messages (InputError when a signal is too short for bands).
