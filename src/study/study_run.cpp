@@ -18,6 +18,7 @@
 #include "core/progress.hpp"
 #include "simulation/case_run.hpp"
 #include "study/mpi_session.hpp"
+#include "study/study_results.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -179,6 +180,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
                      outcome.message.c_str());
       }
       progress.update(done, run, failed);
+      if (options.progress_sink) options.progress_sink->report("study " + spec.name, done, mine.size());
     }
   };
   {
@@ -219,6 +221,47 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
     }
   }
   return outcomes;
+}
+
+StudyRun run_study(const std::string& study_file, StudyRunOptions options, bool restart, bool yes, MpiSession& mpi) {
+  const auto started = std::chrono::steady_clock::now();
+  // Every rank reads the study and the same list of cases.
+  const StudySpec spec = read_study_file(study_file);
+  if (spec.case_count() > kStudyCasesWithoutYes && !yes)
+    throw InputError(study_file, "vary",
+                     "makes " + (spec.case_count() == SIZE_MAX ? std::string("too many") : std::to_string(spec.case_count())) +
+                         " cases (more than " + std::to_string(kStudyCasesWithoutYes) +
+                         "): shorten the lists, or run with --yes");
+  const std::vector<StudyCase> cases = study_cases(spec);
+  if (options.out.empty()) options.out = fs::path("out") / spec.name;
+  const fs::path& out = options.out;
+  if (mpi.rank() == 0) {
+    if (restart) fs::remove_all(out / "cases");
+    fs::create_directories(out / "cases");
+    // Staging folders of cases cut off by an earlier run (core/output_directory.hpp).
+    for (const auto& entry : fs::directory_iterator(out / "cases"))
+      if (entry.path().filename().string().starts_with(".")) fs::remove_all(entry.path());
+  }
+  mpi.barrier();
+  StudyRun result;
+  result.out = out;
+  result.cases = cases.size();
+  std::vector<CaseOutcome> outcomes;
+  try {
+    outcomes = run_study_cases(spec, cases, options, mpi);
+  } catch (const Interrupted&) {
+    if (mpi.active()) mpi.leave_without_finalize();
+    throw;
+  }
+  if (mpi.rank() != 0) return result;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  try {
+    result.summary = write_study_results(out, spec, cases, outcomes, {{"ranks", mpi.size()}, {"wall_time_s", wall}}, true);
+  } catch (const Interrupted&) {
+    if (mpi.active()) mpi.leave_without_finalize();  // stopped while it plots: as above
+    throw;
+  }
+  return result;
 }
 
 }  // namespace rollnoise

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/cache_folder.hpp"
 #include "study/study_cases.hpp"
 #include "study/study_file.hpp"
@@ -21,6 +23,7 @@
 namespace rollnoise {
 
 class MpiSession;
+class ProgressSink;
 
 struct StudyRunOptions {
   std::filesystem::path out;  // the study's folder
@@ -29,6 +32,8 @@ struct StudyRunOptions {
   bool progress = true;       // cases done, with an ETA, on a terminal (not in CI)
   // The cache folder the cases share (CaseRunOptions::cache); std::nullopt: none.
   std::optional<std::filesystem::path> cache = default_cache_directory();
+  // Told of the cases done out of this rank's cases (core/progress.hpp); none: nobody.
+  ProgressSink* progress_sink = nullptr;
 };
 
 struct CaseOutcome {
@@ -44,5 +49,22 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
                                          const StudyRunOptions& options, const MpiSession& mpi);
 
 std::filesystem::path case_folder(const std::filesystem::path& out, const StudyCase& c);
+
+// A whole study as `rollnoise study` runs it (what the command line and the Python module's
+// rollnoise.study call): the study file read and every key checked, a study of more than
+// kStudyCasesWithoutYes cases refused without `yes`, the folder prepared (`options.out`, empty:
+// out/<[study] name>; cases/ removed first with `restart`; the staging folders of cases cut off
+// by an earlier run removed), this rank's cases run (run_study_cases), and on rank 0 the
+// results written (study_results.hpp). On Ctrl-C every rank stops and Interrupted is thrown
+// (under MPI without MPI_Finalize at the end).
+// Above this many cases a study asks for --yes (a typo in a list can make thousands).
+inline constexpr std::size_t kStudyCasesWithoutYes = 200;
+
+struct StudyRun {
+  std::filesystem::path out;
+  std::size_t cases = 0;
+  nlohmann::json summary;  // what summary.json holds, on rank 0 (null on the others)
+};
+StudyRun run_study(const std::string& study_file, StudyRunOptions options, bool restart, bool yes, MpiSession& mpi);
 
 }  // namespace rollnoise

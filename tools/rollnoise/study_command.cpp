@@ -43,55 +43,28 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
 }
 
 int run_study(const StudyOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  MpiSession mpi;  // every rank reads the study and the same list of cases
-  const StudySpec spec = read_study_file(options.study_file);
-  if (spec.case_count() > kStudyCasesWithoutYes && !options.yes)
-    throw InputError(options.study_file, "vary",
-                     "makes " + (spec.case_count() == SIZE_MAX ? std::string("too many") : std::to_string(spec.case_count())) +
-                         " cases (more than " + std::to_string(kStudyCasesWithoutYes) +
-                         "): shorten the lists, or run with --yes");
-  const std::vector<StudyCase> cases = study_cases(spec);
-  const fs::path out = options.out.empty() ? fs::path("out") / spec.name : fs::path(options.out);
-  if (mpi.rank() == 0) {
-    if (options.restart) fs::remove_all(out / "cases");
-    fs::create_directories(out / "cases");
-    // Staging folders of cases cut off by an earlier run (core/output_directory.hpp).
-    for (const auto& entry : fs::directory_iterator(out / "cases"))
-      if (entry.path().filename().string().starts_with(".")) fs::remove_all(entry.path());
-  }
-  mpi.barrier();
+  MpiSession mpi;
   StudyRunOptions run;
-  run.out = out;
+  run.out = options.out;
   run.threads = options.threads;
   run.fail_fast = options.fail_fast;
   // Resolved once for the whole study, so that a folder that cannot be written is one warning.
   run.cache = usable_cache_folder(options.cache, options.no_cache);
-  std::vector<CaseOutcome> outcomes;
+  StudyRun study;
   try {
-    outcomes = run_study_cases(spec, cases, run, mpi);
+    study = rollnoise::run_study(options.study_file, run, options.restart, options.yes, mpi);
   } catch (const Interrupted& stopped) {
-    if (mpi.active()) mpi.leave_without_finalize();
     // Every rank stops together (run_study_cases); rank 0 alone says so, as it alone reports
     // the study, so that Ctrl-C under mpirun gives one line rather than one per rank.
     if (mpi.rank() != 0) return stopped.exit_status();
     throw;
   }
   if (mpi.rank() != 0) return 0;
-
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  nlohmann::json summary;
-  try {
-    summary = write_study_results(out, spec, cases, outcomes, {{"ranks", mpi.size()}, {"wall_time_s", wall}}, true);
-  } catch (const Interrupted&) {
-    if (mpi.active()) mpi.leave_without_finalize();  // stopped while it plots: as above
-    throw;
-  }
-  const auto& counts = summary["cases"];
+  const auto& counts = study.summary["cases"];
   std::printf("rollnoise: wrote %s (results.csv, spectra.csv, summary.json, plots): %zu cases, %zu ok (%zu from an earlier run), %zu failed\n",
-              out.string().c_str(), counts["total"].get<std::size_t>(), counts["ok"].get<std::size_t>(),
+              study.out.string().c_str(), counts["total"].get<std::size_t>(), counts["ok"].get<std::size_t>(),
               counts["from_earlier_run"].get<std::size_t>(), counts["failed"].get<std::size_t>());
-  return counts["ok"].get<std::size_t>() == cases.size() ? 0 : 1;
+  return counts["ok"].get<std::size_t>() == study.cases ? 0 : 1;
 }
 
 }  // namespace rollnoise

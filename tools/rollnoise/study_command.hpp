@@ -20,9 +20,6 @@ struct StudyOptions {
   bool no_cache = false;
 };
 
-// Above this many cases a study asks for --yes (a typo in a list can make thousands).
-inline constexpr std::size_t kStudyCasesWithoutYes = 200;
-
 CLI::App* add_study_command(CLI::App& app, StudyOptions& options);
 
 int run_study(const StudyOptions& options);
