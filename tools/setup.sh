@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   gnuplot-nox fonts-dejavu-core
+  pybind11-dev python3-dev python3-numpy python3-pytest
+  python3-nbclient python3-nbformat python3-ipykernel python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
