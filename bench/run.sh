@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh >/dev/null
-cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF >/dev/null
+cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
 cmake --build build-bench -j "$(nproc)" --target bench_contact bench_radiation
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 build-bench/bench/bench_contact --benchmark_out=build-bench/bench_contact.json --benchmark_out_format=json "$@"

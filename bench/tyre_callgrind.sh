@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ -z ${ROLLNOISE_EXE:-} ]]; then
   bash tools/setup.sh >/dev/null
-  cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF >/dev/null
+  cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
   cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
 fi
 exe=${ROLLNOISE_EXE:-build-bench/tools/rollnoise/rollnoise}

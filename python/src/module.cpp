@@ -146,6 +146,18 @@ auto run_released(const py::object& progress, Work&& work) -> decltype(work(stat
   return std::move(*result);
 }
 
+// run_released for a verb that writes its outputs only when asked: `compute(sink)`, then
+// `write(out, result)` when `out` is given, both on the worker thread (a write is part of the
+// run: Ctrl-C stops it too).
+template <class Compute, class Write>
+auto run_then_write(const py::object& progress, const std::string& out, Compute&& compute, Write&& write) {
+  return run_released(progress, [&](ProgressSink* sink) {
+    auto made = compute(sink);
+    if (!out.empty()) write(out, made);
+    return made;
+  });
+}
+
 // A Python value as a TOML node (a dict given for a case or a road): dict → table, list/tuple →
 // array, bool, int, float, str. Anything else is an InputError naming the key.
 std::unique_ptr<toml::node> to_toml(const py::handle& value, const std::string& where, const std::string& source);
@@ -208,6 +220,17 @@ CaseFile load_case(const std::string& kind, const py::object& value, const std::
   if (kind == "path") return CaseFile::load(value.cast<std::string>(), overrides);
   if (kind == "text") return CaseFile::from_table(name, parse_toml_text(value.cast<std::string>(), name), overrides);
   return CaseFile::from_table(name, to_toml_table(value.cast<py::dict>(), "", name), overrides);
+}
+
+// The TOML of a road or model given as text or a dict (std::nullopt for a path), named `name`.
+std::optional<toml::table> toml_of(const std::string& kind, const py::object& value, const std::string& name) {
+  try {
+    if (kind == "text") return parse_toml_text(value.cast<std::string>(), name);
+    if (kind == "dict") return to_toml_table(value.cast<py::dict>(), "", name);
+  } catch (const InputError& error) {
+    throw error.with_source(name);
+  }
+  return std::nullopt;
 }
 
 py::dict py_simulate(const std::string& kind, const py::object& value, const std::string& name,
@@ -277,12 +300,7 @@ py::dict py_road(const std::string& kind, const py::object& value, const std::st
               double width, bool force, const std::string& out, const py::object& progress) {
   RoadRunOptions options;
   options.input = kind == "path" ? value.cast<std::string>() : name;
-  try {
-    if (kind == "text") options.toml = parse_toml_text(value.cast<std::string>(), name);
-    if (kind == "dict") options.toml = to_toml_table(value.cast<py::dict>(), "", name);
-  } catch (const InputError& error) {
-    throw error.with_source(name);
-  }
+  options.toml = toml_of(kind, value, name);
   options.overrides = overrides;
   options.length = length;
   if (spacing) {
@@ -292,13 +310,14 @@ py::dict py_road(const std::string& kind, const py::object& value, const std::st
   options.lines = lines;
   options.width = width;
   options.force = force;
-  const RoadRun result = run_released(progress, [&](ProgressSink* sink) {
-    RoadRunOptions run = options;
-    run.progress_sink = sink;
-    RoadRun made = run_road(run, out);
-    if (!out.empty()) write_road_outputs(out, made);
-    return made;
-  });
+  const RoadRun result = run_then_write(
+      progress, out,
+      [&](ProgressSink* sink) {
+        RoadRunOptions run = options;
+        run.progress_sink = sink;
+        return run_road(run, out);
+      },
+      write_road_outputs);
   return road_answer(result);
 }
 
@@ -313,11 +332,9 @@ py::dict py_road_heights(const py::array_t<double, py::array::c_style | py::arra
   for (py::ssize_t j = 0; j < lines; ++j)
     for (py::ssize_t i = 0; i < samples; ++i)
       z_lines[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] = data[j * samples + i];
-  const RoadRun result = run_released(py::none(), [&](ProgressSink*) {
-    RoadRun made = run_road_heights(std::move(z_lines), spacing, y, name);
-    if (!out.empty()) write_road_outputs(out, made);
-    return made;
-  });
+  const RoadRun result = run_then_write(
+      py::none(), out, [&](ProgressSink*) { return run_road_heights(std::move(z_lines), spacing, y, name); },
+      write_road_outputs);
   return road_answer(result);
 }
 
@@ -338,11 +355,8 @@ py::dict analysis_answer(const RecordingAnalysis& analysis) {
 }
 
 py::dict py_analyse_file(const std::string& path, double full_scale, const std::string& out) {
-  const RecordingAnalysis result = run_released(py::none(), [&](ProgressSink*) {
-    RecordingAnalysis made = analyse_recording(path, full_scale);
-    if (!out.empty()) write_recording_analysis(out, made);
-    return made;
-  });
+  const RecordingAnalysis result = run_then_write(
+      py::none(), out, [&](ProgressSink*) { return analyse_recording(path, full_scale); }, write_recording_analysis);
   return analysis_answer(result);
 }
 
@@ -359,11 +373,9 @@ py::dict py_analyse_signals(const std::vector<py::array_t<double, py::array::c_s
     r.sample_rate = sample_rate;
     receivers.push_back(std::move(r));
   }
-  const RecordingAnalysis result = run_released(py::none(), [&](ProgressSink*) {
-    RecordingAnalysis made = analyse_signals(std::move(receivers), input);
-    if (!out.empty()) write_recording_analysis(out, made);
-    return made;
-  });
+  const RecordingAnalysis result = run_then_write(
+      py::none(), out, [&](ProgressSink*) { return analyse_signals(std::move(receivers), input); },
+      write_recording_analysis);
   return analysis_answer(result);
 }
 
@@ -386,21 +398,13 @@ py::dict py_greens(const std::string& kind, const py::object& value, const std::
                    bool force, const std::string& out) {
   GreensRunOptions options;
   options.model = kind == "path" ? value.cast<std::string>() : name;
-  try {
-    if (kind == "text") options.toml = parse_toml_text(value.cast<std::string>(), name);
-    if (kind == "dict") options.toml = to_toml_table(value.cast<py::dict>(), "", name);
-  } catch (const InputError& error) {
-    throw error.with_source(name);
-  }
+  options.toml = toml_of(kind, value, name);
   options.frequencies = frequencies;
   options.distances = distances;
   options.cache = cache_of(cache);
   options.force = force;
-  const GreensRun result = run_released(py::none(), [&](ProgressSink*) {
-    GreensRun made = run_greens(options, out);
-    if (!out.empty()) write_greens_outputs(out, made);
-    return made;
-  });
+  const GreensRun result = run_then_write(
+      py::none(), out, [&](ProgressSink*) { return run_greens(options, out); }, write_greens_outputs);
   py::dict answer;
   answer["frequency_hz"] = vector_of(result.frequencies);
   answer["distance_m"] = vector_of(result.distances);
@@ -436,13 +440,14 @@ py::dict py_calibrate(const std::string& model, const std::vector<std::string>& 
   options.first_stage = first_stage;
   options.force = force;
   options.progress = false;
-  const CalibrationRun result = run_released(progress, [&](ProgressSink* sink) {
-    CalibrationRunOptions run = options;
-    run.progress_sink = sink;
-    CalibrationRun made = run_calibration(run, out);
-    if (!out.empty()) write_calibration_outputs(out, made);
-    return made;
-  });
+  const CalibrationRun result = run_then_write(
+      progress, out,
+      [&](ProgressSink* sink) {
+        CalibrationRunOptions run = options;
+        run.progress_sink = sink;
+        return run_calibration(run, out);
+      },
+      write_calibration_outputs);
   py::list frfs;
   for (const FittedFrf& f : result.result.frfs) {
     py::dict one;
