@@ -15,6 +15,7 @@
 #include "core/gnuplot.hpp"
 #include "core/hdf5_writer.hpp"
 #include "core/output_directory.hpp"
+#include "core/regular_file.hpp"
 #include "greens/fitted_modal_tyre.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
@@ -175,9 +176,7 @@ void write_green_against_time(const fs::path& dir, const CentreLineResponse& res
 GreensRun run_greens(const GreensRunOptions& options, const fs::path& out) {
   const auto started = std::chrono::steady_clock::now();
   const fs::path input(options.model);
-  std::error_code ec;
-  if (!options.toml && !fs::is_regular_file(input, ec))
-    throw InputError(options.model, "", "file not found (or not a regular file)");
+  if (!options.toml) require_regular_file(options.model);
   const CaseFile file = options.toml ? CaseFile::model_from_table(input, *options.toml) : CaseFile::load_model(input);
   const ConfigTable top = file.top();
   // The same cache folder as simulate's (two-layer tables, mode fits).

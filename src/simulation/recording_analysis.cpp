@@ -8,6 +8,7 @@
 #include "audio/wav_file.hpp"
 #include "core/error.hpp"
 #include "core/output_directory.hpp"
+#include "core/regular_file.hpp"
 #include "core/uff58.hpp"
 
 namespace rollnoise {
@@ -97,8 +98,7 @@ RecordingAnalysis analyse(std::vector<ReceiverSignal> signals, const std::string
 }  // namespace
 
 std::vector<ReceiverSignal> read_recording(const std::string& file, double full_scale_pa, double& full_scale_used) {
-  std::error_code ec;
-  if (!fs::is_regular_file(fs::path(file), ec)) throw InputError(file, "", "file not found (or not a regular file)");
+  require_regular_file(file);
   full_scale_used = 0.0;
   const std::string ext = lowercase_extension(file);
   return ext == ".uff" || ext == ".unv" ? read_uff_recordings(file) : read_wav_recordings(file, full_scale_pa, full_scale_used);

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/gnuplot.hpp"
 #include "core/output_directory.hpp"
+#include "core/regular_file.hpp"
 #include "core/progress.hpp"
 #include "road/mean_profile_depth.hpp"
 #include "road/profile_surface_road.hpp"
@@ -249,9 +250,7 @@ void plot_road(const fs::path& dir, const RoadRun& road, bool with_target) {
 RoadRun run_road(const RoadRunOptions& options, const fs::path& out) {
   const auto started = std::chrono::steady_clock::now();
   const fs::path input(options.input);
-  std::error_code ec;
-  if (!options.toml && !fs::is_regular_file(input, ec))
-    throw InputError(options.input, "", "file not found (or not a regular file)");
+  if (!options.toml) require_regular_file(options.input);
   const bool is_toml = options.toml || input.extension() == ".toml";
   if (!is_toml && !options.overrides.empty()) {
     throw InputError(options.input, "--set", "applies to a TOML road; a profile file has no keys to set");
