@@ -20,7 +20,7 @@ force=0
 mkdir -p "$out"
 case=models/cases/plate_rough_80kmh.toml
 # VALIDATION_SURFACES="dac11 sma11 ..." runs a subset at 80 km/h.
-read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined}"
+read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined captif_fine}"
 
 run() {  # surface speed_kmh
   local dir="$out/$1_$2kmh"
@@ -31,7 +31,7 @@ run() {  # surface speed_kmh
   fi
 }
 for s in "${surfaces[@]}"; do run "$s" 80; done
-for s in dac11 sma11; do run "$s" 50; done
+for s in dac11 sma11 captif_fine; do run "$s" 50; done
 
 # CPX level: 10 lg of the mean of 10^(LAeq/10) over cpx_front and cpx_rear (summary.json).
 cpx() {
