@@ -7,6 +7,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "road/least_squares_line.hpp"
 
 namespace rollnoise {
 namespace {
@@ -138,20 +139,10 @@ MpdResult mean_profile_depth(std::span<const double> z, double spacing_m) {
                    profile.begin() + static_cast<std::ptrdiff_t>(end));
     // Slope suppression: subtract the least-squares line over the segment.
     const auto m = static_cast<double>(segment.size());
-    const double t_mean = (m - 1.0) / 2.0;
-    double z_mean = 0.0;
-    for (double v : segment) z_mean += v;
-    z_mean /= m;
-    double stt = 0.0, stz = 0.0;
-    for (std::size_t i = 0; i < segment.size(); ++i) {
-      const double t = static_cast<double>(i) - t_mean;
-      stt += t * t;
-      stz += t * (segment[i] - z_mean);
-    }
-    const double slope = stt > 0.0 ? stz / stt : 0.0;
+    const LeastSquaresLine trend = least_squares_line(segment);
     double level = 0.0;
     for (std::size_t i = 0; i < segment.size(); ++i) {
-      segment[i] -= z_mean + slope * (static_cast<double>(i) - t_mean);
+      segment[i] -= trend.at(i);
       level += segment[i];
     }
     level /= m;

@@ -6,26 +6,17 @@
 
 #include "core/cancellation.hpp"
 #include "core/error.hpp"
+#include "road/least_squares_line.hpp"
 
 namespace rollnoise {
 
 double detrended_skewness(const std::vector<double>& line) {
   const std::size_t n = line.size();
   if (n < 3) return 0.0;
-  // The least-squares line z = m + s·(i − centre) over the sample index i.
-  const double centre = 0.5 * static_cast<double>(n - 1);
-  double mean = 0.0, moment = 0.0, spread = 0.0;
-  for (std::size_t i = 0; i < n; ++i) mean += line[i];
-  mean /= static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) - centre;
-    moment += t * (line[i] - mean);
-    spread += t * t;
-  }
-  const double slope = moment / spread;
+  const LeastSquaresLine trend = least_squares_line(line);
   double m2 = 0.0, m3 = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double r = line[i] - mean - slope * (static_cast<double>(i) - centre);
+    const double r = line[i] - trend.at(i);
     m2 += r * r;
     m3 += r * r * r;
   }

@@ -12,6 +12,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/fftw_plan.hpp"
+#include "road/least_squares_line.hpp"
 #include "road/texture_spectrum.hpp"
 
 namespace rollnoise {
@@ -28,29 +29,14 @@ FftwArray fftw_array(std::size_t n) {
   return a;
 }
 
-// The least-squares line through (i, z_i) removed.
-void remove_trend(double* z, std::size_t n) {
-  const double mid = 0.5 * static_cast<double>(n - 1);
-  double mean = 0.0, slope_num = 0.0, slope_den = 0.0;
-  for (std::size_t i = 0; i < n; ++i) mean += z[i];
-  mean /= static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) - mid;
-    slope_num += t * (z[i] - mean);
-    slope_den += t * t;
-  }
-  const double slope = slope_num / slope_den;
-  for (std::size_t i = 0; i < n; ++i) z[i] -= mean + slope * (static_cast<double>(i) - mid);
-}
-
 // The cosine series (DCT-II, FFTW's REDFT10) of a line with its least-squares line removed.
 std::vector<double> detrended_cosine_modes(const std::vector<double>& line) {
   const std::size_t n = line.size();
   FftwArray z = fftw_array(n);
   FftwArray modes = fftw_array(n);
   const FftwPlan forward([&] { return fftw_plan_r2r_1d(static_cast<int>(n), z.get(), modes.get(), FFTW_REDFT10, FFTW_ESTIMATE); });
-  std::copy(line.begin(), line.end(), z.get());
-  remove_trend(z.get(), n);
+  const LeastSquaresLine trend = least_squares_line(line);
+  for (std::size_t i = 0; i < n; ++i) z[i] = line[i] - trend.at(i);
   forward.execute();
   return {modes.get(), modes.get() + n};
 }

@@ -12,6 +12,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/fftw_plan.hpp"
+#include "road/least_squares_line.hpp"
 
 namespace rollnoise {
 namespace {
@@ -88,17 +89,7 @@ std::vector<TextureBand> texture_spectrum(std::span<const double> z, double spac
 
   // Detrend (least-squares line) and window (periodic Hann, mean(w²) = 3/8).
   const double nd = static_cast<double>(n);
-  const double t_mean = (nd - 1.0) / 2.0;
-  double z_mean = 0.0;
-  for (double v : z) z_mean += v;
-  z_mean /= nd;
-  double stt = 0.0, stz = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) - t_mean;
-    stt += t * t;
-    stz += t * (z[i] - z_mean);
-  }
-  const double slope = stz / stt;
+  const LeastSquaresLine trend = least_squares_line(z);
   std::unique_ptr<double[], FftwFree> x(fftw_alloc_real(n));
   std::unique_ptr<fftw_complex[], FftwFree> spectrum(fftw_alloc_complex(n / 2 + 1));
   if (!x || !spectrum) throw std::bad_alloc();
@@ -109,7 +100,7 @@ std::vector<TextureBand> texture_spectrum(std::span<const double> z, double spac
   for (std::size_t i = 0; i < n; ++i) {
     const double w = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / nd));
     window_power += w * w;
-    x[i] = w * (z[i] - z_mean - slope * (static_cast<double>(i) - t_mean));
+    x[i] = w * (z[i] - trend.at(i));
   }
   window_power /= nd;
   plan.execute();
