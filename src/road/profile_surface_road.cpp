@@ -99,10 +99,7 @@ TranslatedLineMaker translated_line_maker(const std::vector<double>& centres, do
           return spectral_amplitude_1d(isotropic ? psd.realisable_line_density(wavenumber) : psd.line_density(wavenumber), period);
         },
         SynthesisAmplitudes::fixed);
-    double square = 0.0;
-    for (double v : line) square += v * v;
-    const double rms = std::sqrt(square / static_cast<double>(n));
-    for (double& v : line) v = marginal(v / rms);
+    map_period_through_marginal(line, marginal);
     return line;
   };
 }

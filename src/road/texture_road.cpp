@@ -170,12 +170,7 @@ std::vector<double> texture_line(const TextureBandPsd& psd, const TextureScales&
   std::vector<double> r = synthesise_periodic_profile(
       n, s.spacing, seed, [&](double wavenumber) { return spectral_amplitude_1d(psd.line_density(wavenumber), period); },
       SynthesisAmplitudes::fixed);
-  if (marginal) {
-    double square = 0.0;  // the mean is 0: no mode at n = 0
-    for (double v : r) square += v * v;
-    const double rms = std::sqrt(square / static_cast<double>(n));
-    for (double& v : r) v = marginal(v / rms);
-  }
+  if (marginal) map_period_through_marginal(r, marginal);
   const auto count = static_cast<std::size_t>(last) + 1;
   if (r.size() < count) r.push_back(r.front());  // the period's end: the first sample again
   r.resize(count);
@@ -252,6 +247,13 @@ std::unique_ptr<SampledProfile> make_texture_profile(const TextureRoadSpec& spec
 double texture_sample_spacing(const TextureRoadSpec& spec) {
   const std::vector<double> centres = checked_texture_band_centres(spec);
   return check_scales(spec, TextureBandPsd(centres, spec.levels)).spacing;
+}
+
+void map_period_through_marginal(std::vector<double>& period, const std::function<double(double)>& marginal) {
+  double square = 0.0;  // the mean is 0: no mode at n = 0
+  for (double v : period) square += v * v;
+  const double rms = std::sqrt(square / static_cast<double>(period.size()));
+  for (double& v : period) v = marginal(v / rms);
 }
 
 std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec& spec) {

@@ -91,4 +91,8 @@ double texture_sample_spacing(const TextureRoadSpec& spec);
 std::unique_ptr<SampledSurface> make_texture_surface(const TextureRoadSpec& spec);
 std::unique_ptr<RoadSurface> make_rolling_texture_surface(const TextureRoadSpec& spec);
 
+// Maps one period of a zero-mean Gaussian line through `marginal` (TextureRoadSpec::marginal):
+// each sample over the period's rms.
+void map_period_through_marginal(std::vector<double>& period, const std::function<double(double)>& marginal);
+
 }  // namespace rollnoise
