@@ -46,20 +46,20 @@ std::string sci(double value) {
 
 TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
                                        std::optional<ContactWindow> window, bool require_symmetric)
-    : a_(std::move(structural)), k_(std::move(stiffness)), n_(exponent) {
+    : TreadNewtonContact(std::move(structural), std::make_shared<const PowerLawSprings>(std::move(stiffness), exponent),
+                         window, require_symmetric) {}
+
+TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, std::shared_ptr<const PointSprings> springs,
+                                       std::optional<ContactWindow> window, bool require_symmetric)
+    : a_(std::move(structural)), springs_(std::move(springs)) {
   const Eigen::Index size = a_.rows();
   if (a_.cols() != size)
     throw std::invalid_argument("TreadNewtonContact: the structural compliance A must be square (got " +
                                 std::to_string(a_.rows()) + " × " + std::to_string(a_.cols()) + ")");
   if (!a_.allFinite()) throw std::invalid_argument("TreadNewtonContact: the structural compliance A has non-finite entries");
-  if (k_.size() != size)
-    throw std::invalid_argument("TreadNewtonContact: the stiffness vector has " + std::to_string(k_.size()) +
-                                " entries, expected one per contact point (" + std::to_string(size) + ")");
-  if (size > 0 && !(k_.allFinite() && k_.minCoeff() > 0.0))
-    throw std::invalid_argument("TreadNewtonContact: the spring stiffnesses k must be finite and > 0");
-  if (!(std::isfinite(n_) && n_ >= 1.0))
-    throw std::invalid_argument("TreadNewtonContact: the spring exponent n must be finite and ≥ 1 (got " +
-                                std::to_string(n_) + ")");
+  if (!springs_ || springs_->size() != size)
+    throw std::invalid_argument("TreadNewtonContact: one spring per contact point expected (" + std::to_string(size) +
+                                ")");
   if (size > 0) {
     // Conjugate gradients need A + C symmetric positive definite: A symmetric with a positive
     // diagonal is checked here, a non-positive curvature in the iterations is reported there.
@@ -77,7 +77,6 @@ TreadNewtonContact::TreadNewtonContact(Eigen::MatrixXd structural, Eigen::Vector
                                   std::to_string(size));
     product_ = std::make_unique<WindowConvolution>(a_, window->window, window->lateral);
   }
-  power_ = n_ == 1.5 ? Power::one_and_a_half : n_ == 2.5 ? Power::two_and_a_half : n_ == 3.0 ? Power::three : Power::general;
   a_diagonal_ = a_.diagonal();
   delta_ = force_ = slope_ = gap_ = Eigen::VectorXd::Zero(size);
   compliance_ = mask_ = inverse_diagonal_ = x_ = ax_ = r_ = z_ = p_ = ap_ = mp_ = shifted_ = delta_;
@@ -94,66 +93,9 @@ void TreadNewtonContact::multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out
   else out.noalias() = a_ * z;
 }
 
-double TreadNewtonContact::lower_power(double magnitude) const {
-  // The Hertzian n = 3/2 and its neighbours by square roots, several times cheaper than
-  // std::pow, which each contact point otherwise calls a few times per Newton iteration.
-  switch (power_) {
-    case Power::one_and_a_half:
-      return std::sqrt(magnitude);
-    case Power::two_and_a_half:
-      return magnitude * std::sqrt(magnitude);
-    case Power::three:
-      return magnitude * magnitude;
-    case Power::general:
-      break;
-  }
-  return std::pow(magnitude, n_ - 1.0);
-}
-
-void TreadNewtonContact::evaluate_spring(Eigen::Index p) {
-  const double d = delta_(p);
-  const double magnitude = std::abs(d);
-  if (n_ == 1.0) {
-    force_(p) = k_(p) * d;
-    slope_(p) = k_(p);
-  } else if (n_ == 2.0) {
-    force_(p) = k_(p) * magnitude * d;
-    slope_(p) = 2.0 * k_(p) * magnitude;
-  } else {
-    const double lower = lower_power(magnitude);  // |δ|^{n−1}
-    force_(p) = k_(p) * lower * d;
-    slope_(p) = n_ * k_(p) * lower;
-  }
-}
-
 void TreadNewtonContact::evaluate_gap(const Eigen::VectorXd& q) {
   multiply(force_, gap_);
   gap_ += q + delta_;
-}
-
-double TreadNewtonContact::compression_of(double y, Eigen::Index p, double guess) const {
-  const double t = std::abs(y);
-  const double c = a_diagonal_(p) * k_(p);
-  double d = t;
-  if (t == 0.0) {
-    d = 0.0;
-  } else if (n_ == 1.0) {
-    d = t / (1.0 + c);
-  } else if (n_ == 2.0) {
-    d = 2.0 * t / (1.0 + std::sqrt(1.0 + 4.0 * c * t));  // the root of cδ² + δ = t, no cancellation
-  } else {
-    // g(δ) = δ + cδⁿ − t is increasing and convex on δ > 0: Newton from above the root decreases
-    // onto it monotonically, and from below its first step lands above it. The last step's
-    // compression is close; min(t, (t/c)^{1/n}) bounds the root from above otherwise.
-    d = guess != 0.0 ? std::abs(guess) : std::min(t, std::pow(t / c, 1.0 / n_));
-    for (int i = 0; i < 100; ++i) {
-      const double lower = lower_power(d);
-      const double change = (d + c * lower * d - t) / (1.0 + c * n_ * lower);
-      d -= change;
-      if (std::abs(change) <= 4.0 * kEps * d) break;
-    }
-  }
-  return std::copysign(d, y);
 }
 
 double TreadNewtonContact::merit(const Eigen::VectorXd& q) const {
@@ -163,10 +105,12 @@ double TreadNewtonContact::merit(const Eigen::VectorXd& q) const {
       if (active_[static_cast<std::size_t>(p)]) residual = std::max(residual, std::abs(gap_(p)));
     return residual;
   }
-  // E = ½FᵀAF + qᵀF + Σ k^{−1/n}F^{1+1/n}/(1 + 1/n) with A·F = gap − q − δ and
-  // k^{−1/n}F^{1+1/n} = F·δ: no product beyond the gap's.
-  const double n = n_;
-  return 0.5 * force_.dot(gap_ + q - delta_) + n / (n + 1.0) * force_.dot(delta_);
+  // E = ½FᵀAF + qᵀF + Σ ∫₀^F δ with A·F = gap − q − δ and ∫₀^F δ = F·δ − ∫₀^δ F: no product
+  // beyond the gap's.
+  double complementary = 0.0;
+  for (Eigen::Index p = 0; p < q.size(); ++p)
+    if (force_(p) != 0.0) complementary += force_(p) * delta_(p) - springs_->stored_energy(p, delta_(p));
+  return 0.5 * force_.dot(gap_ + q - delta_) + complementary;
 }
 
 double TreadNewtonContact::merit_noise(const Eigen::VectorXd& q) const {
@@ -434,7 +378,7 @@ void TreadNewtonContact::warm_start(const Eigen::Ref<const Eigen::VectorXd>& for
   if (force.size() != a_.rows() || !force.allFinite())
     throw std::invalid_argument("TreadNewtonContact::warm_start: " + std::to_string(a_.rows()) + " finite forces expected");
   for (Eigen::Index p = 0; p < force.size(); ++p)
-    delta_(p) = force(p) > 0.0 ? std::pow(force(p) / k_(p), 1.0 / n_) : 0.0;  // δ = (F/k)^{1/n}
+    delta_(p) = force(p) > 0.0 ? springs_->compression_at(p, force(p)) : 0.0;
   for (Eigen::Index p = 0; p < delta_.size(); ++p) in_contact_[static_cast<std::size_t>(p)] = delta_(p) > 0.0 ? 1 : 0;
 }
 

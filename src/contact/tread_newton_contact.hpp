@@ -1,6 +1,9 @@
 #pragma once
-// The per-step contact of a rolling tyre with a nonlinear tread (springs F_p = k_p·δ_p^n in
-// series with the structure, docs/physics/contact.md, "The rolling tyre"), solved fast enough for long runs.
+// The per-step contact of a rolling tyre with nonlinear springs in series with the structure,
+// solved fast enough for long runs: the nonlinear tread F_p = k_p·δ_p^n (docs/physics/contact.md,
+// "The rolling tyre") or any increasing F_p = f_p(δ_p) (point_springs.hpp; the per-cell contact
+// laws of the road's fine texture). Written below for the power law; for a general law replace
+// k_p^{−1/n}·F^{1+1/n}/(1 + 1/n) by ∫₀^F f_p⁻¹ and n·k_p·δ^{n−1} by f_p'(δ).
 //
 // The problem (the same as NonlinearTreadContact's, which solves it with KINSOL and stays the
 // reference): with the structure's instantaneous compliance A (P × P) and the known part q,
@@ -56,6 +59,7 @@
 
 #include <Eigen/Core>
 
+#include "contact/point_springs.hpp"
 #include "contact/window_convolution.hpp"
 
 namespace rollnoise {
@@ -67,6 +71,10 @@ class TreadNewtonContact {
   // window: A depends on x_p − x_q only on this window (matrix_unchanged_by checks it), and its
   // products are done by FFT; without it, dense.
   TreadNewtonContact(Eigen::MatrixXd structural, Eigen::VectorXd stiffness, double exponent,
+                     std::optional<ContactWindow> window = {}, bool require_symmetric = true);
+  // Any springs (point_springs.hpp), one per point; the caller may change what they say between
+  // solves (the per-cell contact laws follow the road), keeping them alive while this lives.
+  TreadNewtonContact(Eigen::MatrixXd structural, std::shared_ptr<const PointSprings> springs,
                      std::optional<ContactWindow> window = {}, bool require_symmetric = true);
   ~TreadNewtonContact();
   TreadNewtonContact(const TreadNewtonContact&) = delete;
@@ -81,7 +89,7 @@ class TreadNewtonContact {
   // that receive none start at δ = 0. For a contact set that moves with the road.
   void relabel(const std::vector<Eigen::Index>& new_index);
 
-  const Eigen::VectorXd& force() const noexcept { return force_; }        // F = k ∘ δⁿ, N
+  const Eigen::VectorXd& force() const noexcept { return force_; }        // F = f(δ), N
   const Eigen::VectorXd& compression() const noexcept { return delta_; }  // δ, m
   const Eigen::VectorXd& gap() const noexcept { return gap_; }            // q + A·F + δ, m
   // The points with F > 0 after the last solve (or δ > 0 of the warm start, once set or moved).
@@ -92,15 +100,15 @@ class TreadNewtonContact {
  private:
   // out = A·z (by FFT when the window is known).
   void multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out);
-  // |δ|^{n−1} for |δ| = magnitude.
-  double lower_power(double magnitude) const;
   // force_ and slope_ (dF/dδ) from delta_ at point p, with the odd extension F(−δ) = −F(δ)
   // that Newton may visit.
-  void evaluate_spring(Eigen::Index p);
+  void evaluate_spring(Eigen::Index p) { springs_->evaluate(p, delta_(p), force_(p), slope_(p)); }
   // gap_ = q + A·force_ + delta_.
   void evaluate_gap(const Eigen::VectorXd& q);
-  // δ with δ + c·δⁿ = y (c = A_pp·k_p), odd in y; `guess` > 0 starts Newton near the root.
-  double compression_of(double y, Eigen::Index p, double guess) const;
+  // δ with δ + A_pp·F_p(δ) = y, odd in y; `guess` starts the root search near it.
+  double compression_of(double y, Eigen::Index p, double guess) const {
+    return springs_->compression_of(p, y, a_diagonal_(p), guess);
+  }
   // Sets δ_p = 0 (and F_p = 0) at point p, keeping gap_ = q + A·F + δ.
   void release(Eigen::Index p);
   // What the line search must not raise: the energy (2) at the current forces (from the gap)
@@ -118,10 +126,8 @@ class TreadNewtonContact {
   void bicgstab(double tolerance);             // otherwise
 
   Eigen::MatrixXd a_;
-  Eigen::VectorXd k_, a_diagonal_;
-  double n_;
-  enum class Power { general, one_and_a_half, two_and_a_half, three };  // n − 1 by square roots
-  Power power_ = Power::general;
+  Eigen::VectorXd a_diagonal_;
+  std::shared_ptr<const PointSprings> springs_;
   bool symmetric_ = true;
   std::unique_ptr<WindowConvolution> product_;
 
