@@ -215,6 +215,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
                                 " model includes its tread's local deformation; a separate tread is not allowed");
   if (nonlinear && local_compliance.cwiseAbs().maxCoeff() > 0.0)
     throw std::invalid_argument("rolling tyre: a nonlinear tread has no linear local compliance");
+  const bool texture_law = settings.contact_law == ContactLaw::texture;
+  if (texture_law && nonlinear)
+    throw std::invalid_argument("rolling tyre: the texture contact law and a nonlinear tread are alternatives");
   const SteadyRolling steady = solve_steady_rolling(modes, local_compliance, settings.static_load, nonlinear);
 
   std::unique_ptr<HistoryEngine> engine;
@@ -251,7 +254,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const Eigen::MatrixXd g0_skew = g0 - g0_symmetric;
   const double skewness = g0_skew.cwiseAbs().maxCoeff() / g0.cwiseAbs().maxCoeff();
   const double lag_growth = skewness > 0.0 ? lagged_skew_growth(g0_symmetric, g0_skew, steady.force) : 0.0;
-  const bool whole_g0 = !nonlinear && lag_growth > whole_contact_matrix_above;
+  // The texture law's step is nonlinear too, but for a tyre whose lag would amplify it takes the
+  // whole G0 (BiCGSTAB), as the linear step does.
+  const bool whole_g0 = (!nonlinear || texture_law) && lag_growth > whole_contact_matrix_above;
   const std::vector<Eigen::Index> shift_back = shift_along_window(grid);
   // The contact matrix depends on x_p − x_q only (a translation-invariant tyre), so a set shifted
   // along the window keeps its factor, and products with it are convolutions along x; checked,
@@ -275,7 +280,30 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   std::unique_ptr<NonlinearTreadContact> reference_springs;
   std::optional<ContactWindow> window;
   if (shift_invariant) window = ContactWindow{grid.window, grid.lateral};
-  if (nonlinear && nonlinear->solver == NonlinearTreadSolver::kinsol) {
+  // Texture laws: one per cell the window's points meet over the run, cell m·Ny + j centred at
+  // the road position m (x(0) + m·dx/p, as the road ring below) on lateral line j.
+  const auto road_positions = static_cast<std::size_t>(grid.window) * static_cast<std::size_t>(substeps);
+  std::shared_ptr<const CellContactLaws> laws;
+  std::shared_ptr<CellLawSprings> cell_springs;
+  TyreContactTrace trace;
+  if (texture_law) {
+    const auto started = std::chrono::steady_clock::now();
+    ContactCellGrid cells;
+    cells.dx = grid.dx();
+    cells.dy = grid.dy();
+    cells.x0 = grid.x(0);
+    cells.step = grid.dx() / substeps;
+    cells.positions = road_positions + samples - 1;
+    for (int j = 0; j < grid.lateral; ++j) cells.lines.push_back(grid.y(j) - 0.5 * grid.width);
+    trace.law_pixels = cell_pixels(cells.dx, cells.dy, road.sample_spacing(), "", "[road] sample_spacing");
+    laws = make_texture_contact_laws(road, cells, trace.law_pixels, settings.rubber, settings.law_threads);
+    trace.law_cells = laws->cells();
+    trace.law_force_cap = laws->force_cap();
+    trace.law_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    cell_springs = std::make_shared<CellLawSprings>(laws, points);
+    springs = std::make_unique<TreadNewtonContact>(whole_g0 ? g0 : g0_symmetric, cell_springs, window,
+                                                   /*require_symmetric=*/!whole_g0);
+  } else if (nonlinear && nonlinear->solver == NonlinearTreadSolver::kinsol) {
     reference_springs =
         std::make_unique<NonlinearTreadContact>(g0_symmetric, nonlinear->stiffness, nonlinear->exponent);
   } else if (nonlinear) {
@@ -288,7 +316,6 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     lcp->warm_start(in_contact);
   }
 
-  TyreContactTrace trace;
   trace.engine = engine->name();
   trace.indentation = steady.indentation;
   trace.steady_force = steady.force;
@@ -330,7 +357,6 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   // that column i + 1 met p steps earlier. The filtered heights are kept by m = i·p + n in a ring
   // of W·p per lateral row, so that a step reads the road once per row instead of once per point
   // (the low-pass filter takes 25 road samples each).
-  const auto road_positions = static_cast<std::size_t>(grid.window) * static_cast<std::size_t>(substeps);
   Eigen::MatrixXd road_ring(static_cast<Eigen::Index>(road_positions), grid.lateral);
   const auto filtered_height = [&](std::size_t m, int j) {
     const double x = grid.x(0) + static_cast<double>(m) * grid.dx() / substeps, y = grid.y(j) - 0.5 * grid.width;
@@ -339,15 +365,28 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       sum += road_filter.weights[s] * road.height(x + road_filter.offsets[s], y);
     return sum;
   };
-  for (int j = 0; j < grid.lateral; ++j)
-    for (std::size_t m = 0; m + 1 < road_positions; ++m)
-      road_ring(static_cast<Eigen::Index>(m), j) = filtered_height(m, j);
+  if (!texture_law)
+    for (int j = 0; j < grid.lateral; ++j)
+      for (std::size_t m = 0; m + 1 < road_positions; ++m)
+        road_ring(static_cast<Eigen::Index>(m), j) = filtered_height(m, j);
   // Ctrl-C is polled every step, also when no progress is shown (a study's cases).
   const CancellationToken cancel;
   for (std::size_t n = 0; n < samples; ++n) {
     const double t = static_cast<double>(n) * dt;
     const std::size_t newest = road_positions - 1 + n;  // m = (W − 1)·p + n
-    for (int j = 0; j < grid.lateral; ++j) {
+    if (texture_law) {
+      // Each point meets its cell's highest point, through the cell's law.
+      for (int j = 0; j < grid.lateral; ++j)
+        for (int i = 0; i < grid.window; ++i) {
+          const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
+          const std::size_t cell = m * static_cast<std::size_t>(grid.lateral) + static_cast<std::size_t>(j);
+          const Eigen::Index p = i + static_cast<Eigen::Index>(grid.window) * j;
+          r(p) = laws->top(cell);
+          cell_springs->assign(p, cell);
+        }
+      if (n == 0) springs->warm_start(steady.force);
+    }
+    for (int j = 0; j < grid.lateral && !texture_law; ++j) {
       road_ring(static_cast<Eigen::Index>(newest % road_positions), j) = filtered_height(newest, j);
       for (int i = 0; i < grid.window; ++i) {
         const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
@@ -360,7 +399,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     if (skew_product) {
       skew_product->apply(previous_force, skew_displacement);
       u0 += skew_displacement;
-    } else if (!whole_g0 && skewness > 0.0) {
+    } else if (!whole_g0 && skewness > 0.0) {  // (the dense product when not shift-invariant)
       u0.noalias() += g0_skew * previous_force;
     }
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
@@ -412,6 +451,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       trace.road.row(row) = r.transpose();
     }
     trace.total_force(row) = force.sum();
+    if (texture_law) trace.largest_cell_force = std::max(trace.largest_cell_force, force.maxCoeff());
     const ContactExtent extent = contact_extent(grid, force);
     trace.contact_area(row) = extent.points * cell_area;
     trace.contact_length(row) = extent.length(grid);

@@ -16,6 +16,7 @@
 #include "contact/contact_matrix_structure.hpp"
 #include "contact/history_engine.hpp"
 #include "contact/rolling_modes.hpp"
+#include "contact/texture_contact_laws.hpp"
 
 namespace rollnoise {
 
@@ -40,6 +41,13 @@ class ProgressReporter;
 // features pass the fixed points (docs/physics/contact.md, "The band up to 5 kHz").
 enum class RoadSampling { point, cell_mean, lowpass };
 
+// How a contact cell meets the road's texture inside it.
+//  - rigid: as a flat punch on the road height RoadSampling gives (the cells of before);
+//  - texture: each cell meets the road at its highest point and adds, in series with the tyre,
+//    the per-cell law of the rubber pressed onto the texture inside it (cell_contact_law.hpp,
+//    texture_contact_laws.hpp), solved each step by Newton over contact sets.
+enum class ContactLaw { rigid, texture };
+
 // When the skew part of G0, taken one step late, would multiply a perturbation of the forces by
 // more than this per step (TyreContactTrace::lagged_skew_growth), each step solves the LCP with
 // the whole, non-symmetric G0 instead (rolling_tyre.cpp). The estimate leaves out the coupling
@@ -61,6 +69,9 @@ struct TyreRunSettings {
   // samples × points each). A run that streams them through a ContactStepSink does not, so its
   // memory does not grow with its length.
   bool keep_fields = true;
+  ContactLaw contact_law = ContactLaw::rigid;
+  TreadRubber rubber = {};  // the texture law's rubber (E at the contact's time scale, ν)
+  int law_threads = 1;  // threads that compute the laws before the run
 };
 
 struct TyreContactTrace {
@@ -96,6 +107,13 @@ struct TyreContactTrace {
   double sink_seconds = 0.0;       // in the ContactStepSink, not counted in step_loop_seconds
   long lcp_factorisations = -1;    // dense factorisations of the LCP's basic block (−1: a nonlinear tread)
   long lcp_cg_iterations = 0;      // conjugate-gradient iterations (a well-conditioned symmetric step)
+  // The texture contact law (ContactLaw::texture): its cells, each cell's pixels, the wall time
+  // of computing them, and the largest cell force of the run against the laws' table end.
+  std::size_t law_cells = 0;
+  CellPixels law_pixels = {};
+  double law_seconds = 0.0;
+  double law_force_cap = 0.0;
+  double largest_cell_force = 0.0;
 };
 
 // The steady rolling state on a smooth road under load W: indentation and forces.

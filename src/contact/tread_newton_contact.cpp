@@ -272,7 +272,7 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
     const double threshold = residual <= tolerance ? tolerance : kEarlyExchange * residual;
     Eigen::Index infeasible = 0, last = -1;
     for (Eigen::Index p = 0; p < size; ++p) {
-      if (active_[static_cast<std::size_t>(p)] ? delta_(p) < -threshold : gap_(p) < -threshold) {
+      if (active_[static_cast<std::size_t>(p)] ? pull(p) < -threshold : gap_(p) < -threshold) {
         ++infeasible;
         last = p;
       }
@@ -287,7 +287,7 @@ const Eigen::VectorXd& TreadNewtonContact::solve(const Eigen::VectorXd& q) {
       return force_;
     }
     exchange.exchange(active_, infeasible, last, [&](Eigen::Index p) {
-      return active_[static_cast<std::size_t>(p)] ? delta_(p) < -threshold : gap_(p) < -threshold;
+      return active_[static_cast<std::size_t>(p)] ? pull(p) < -threshold : gap_(p) < -threshold;
     });
   }
   throw std::runtime_error("TreadNewtonContact: the contact set did not settle in " + std::to_string(max_rounds) +
@@ -326,7 +326,7 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
     for (Eigen::Index p = 0; p < size; ++p) {
       if (active_[static_cast<std::size_t>(p)]) {
         residual = std::max(residual, std::abs(gap_(p)));
-        violation = std::max(violation, -delta_(p));
+        violation = std::max(violation, -pull(p));
       } else {
         violation = std::max(violation, -gap_(p));
       }

@@ -51,7 +51,8 @@
 // each contact set, up to the tolerance of (3).
 //
 // Stopping test: max_S |gap| ≤ 1e-13·‖q‖∞ and no point off S below −1e-13·‖q‖∞ nor on S with
-// δ below it (the linear tread's LCP stops at the same level), then δ = max(δ, 0). Nothing is
+// δ + A_pp·F below it (the gap its release would open: for a stiff spring a δ of round-off size
+// is a large force; the linear tread's LCP stops at the same level), then δ = max(δ, 0). Nothing is
 // allocated per solve.
 #include <memory>
 #include <optional>
@@ -109,6 +110,10 @@ class TreadNewtonContact {
   double compression_of(double y, Eigen::Index p, double guess) const {
     return springs_->compression_of(p, y, a_diagonal_(p), guess);
   }
+  // How far a point of the contact set is pulled into tension: y_p = δ_p + A_pp·F_p, the gap it
+  // would open if released (δ_p alone understates it for a stiff spring, whose small negative δ
+  // is a large tensile force).
+  double pull(Eigen::Index p) const { return delta_(p) + a_diagonal_(p) * force_(p); }
   // Sets δ_p = 0 (and F_p = 0) at point p, keeping gap_ = q + A·F + δ.
   void release(Eigen::Index p);
   // What the line search must not raise: the energy (2) at the current forces (from the gap)

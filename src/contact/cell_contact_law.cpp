@@ -1,0 +1,179 @@
+#include "contact/cell_contact_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rollnoise {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+CellContactLaws::CellContactLaws(std::size_t cells, double force_cap, double minimum_compliance)
+    : cap_(force_cap), minimum_compliance_(minimum_compliance), top_(cells, 0.0), approach_(cells * levels, 0.0f) {
+  if (!(force_cap > 0.0) || !std::isfinite(force_cap))
+    throw std::invalid_argument("CellContactLaws: the force cap must be finite and > 0");
+  if (!(minimum_compliance > 0.0) || !std::isfinite(minimum_compliance))
+    throw std::invalid_argument("CellContactLaws: the minimum compliance must be finite and > 0");
+  forces_.resize(levels);
+  for (int k = 0; k < levels; ++k) forces_[static_cast<std::size_t>(k)] = force_cap * std::pow(10.0, (k - levels + 1) / 4.0);
+  for (std::size_t c = 0; c < cells; ++c) {  // a valid law until set: the minimum compliance alone
+    for (int k = 0; k < levels; ++k)
+      approach_[c * levels + static_cast<std::size_t>(k)] =
+          static_cast<float>(minimum_compliance * forces_[static_cast<std::size_t>(k)]);
+  }
+}
+
+void CellContactLaws::set(std::size_t cell, double top, std::span<const double> approaches) {
+  if (cell >= cells() || approaches.size() != static_cast<std::size_t>(levels))
+    throw std::invalid_argument("CellContactLaws::set: cell out of range or not one approach per level");
+  if (!std::isfinite(top)) throw std::invalid_argument("CellContactLaws::set: the first-touch height is not finite");
+  top_[cell] = top;
+  double previous_delta = 0.0, previous_force = 0.0;
+  float previous_stored = 0.0f;
+  for (int k = 0; k < levels; ++k) {
+    const double f = forces_[static_cast<std::size_t>(k)];
+    const double given = approaches[static_cast<std::size_t>(k)];
+    if (!(given >= 0.0) || !std::isfinite(given))
+      throw std::invalid_argument("CellContactLaws::set: an approach is negative or not finite");
+    const double delta = std::max(given, previous_delta + minimum_compliance_ * (f - previous_force));
+    float stored = static_cast<float>(delta);
+    if (!(stored > previous_stored)) stored = std::nextafter(previous_stored, std::numeric_limits<float>::infinity());
+    approach_[cell * levels + static_cast<std::size_t>(k)] = stored;
+    previous_delta = delta;
+    previous_force = f;
+    previous_stored = stored;
+  }
+}
+
+double CellContactLaws::node_delta(std::size_t cell, int i) const noexcept {
+  return i == 0 ? 0.0 : static_cast<double>(approach_[cell * levels + static_cast<std::size_t>(i - 1)]);
+}
+
+double CellContactLaws::node_slope(std::size_t cell, int i) const noexcept {
+  const auto secant = [&](int s) {
+    return (node_force(s + 1) - node_force(s)) / (node_delta(cell, s + 1) - node_delta(cell, s));
+  };
+  if (i == 0) return secant(0);
+  if (i == levels) return secant(levels - 1);
+  // Fritsch–Carlson (Brodlie's weights): a weighted harmonic mean of the neighbouring secants,
+  // which keeps the cubic monotone on every segment.
+  const double h0 = node_delta(cell, i) - node_delta(cell, i - 1), h1 = node_delta(cell, i + 1) - node_delta(cell, i);
+  const double w1 = 2.0 * h1 + h0, w2 = h1 + 2.0 * h0;
+  return (w1 + w2) / (w1 / secant(i - 1) + w2 / secant(i));
+}
+
+int CellContactLaws::segment_of(std::size_t cell, double delta) const noexcept {
+  // The last node at or below δ (levels: beyond the last node).
+  const float* first = approach_.data() + cell * levels;
+  const auto above = std::upper_bound(first, first + levels, static_cast<float>(delta),
+                                      [](float d, float node) { return static_cast<double>(d) < static_cast<double>(node); });
+  int i = static_cast<int>(above - first);  // nodes 1..i have δ ≤ delta (up to float rounding)
+  while (i > 0 && node_delta(cell, i) > delta) --i;
+  while (i < levels && node_delta(cell, i + 1) <= delta) ++i;
+  return i;
+}
+
+void CellContactLaws::force(std::size_t cell, double delta, double& force, double& slope) const {
+  const int i = segment_of(cell, delta);
+  const double d0 = node_delta(cell, i), f0 = node_force(i);
+  if (i == levels) {
+    slope = node_slope(cell, levels);
+    force = f0 + slope * (delta - d0);
+    return;
+  }
+  const double h = node_delta(cell, i + 1) - d0, f1 = node_force(i + 1);
+  const double m0 = node_slope(cell, i), m1 = node_slope(cell, i + 1);
+  const double t = (delta - d0) / h, t2 = t * t, t3 = t2 * t;
+  force = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * h * m0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * h * m1;
+  slope = ((6 * t2 - 6 * t) * f0 + (-6 * t2 + 6 * t) * f1) / h + (3 * t2 - 4 * t + 1) * m0 + (3 * t2 - 2 * t) * m1;
+}
+
+double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, double c, double target) const {
+  double lo = node_delta(cell, i), hi = node_delta(cell, i + 1);
+  double delta = 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    double f = 0.0, slope = 0.0;
+    force(cell, delta, f, slope);
+    const double g = w * delta + c * f - target;
+    if (g > 0.0) hi = delta;
+    else lo = delta;
+    const double derivative = w + c * slope;
+    double next = derivative > 0.0 ? delta - g / derivative : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton safeguarded by the bracket
+    if (std::abs(next - delta) <= 4.0 * kEps * std::max(delta, hi) || hi - lo <= 4.0 * kEps * hi) return next;
+    delta = next;
+  }
+  return delta;
+}
+
+double CellContactLaws::approach_at(std::size_t cell, double f) const {
+  if (!(f > 0.0)) return 0.0;
+  const auto above = std::upper_bound(forces_.begin(), forces_.end(), f);
+  const int i = static_cast<int>(above - forces_.begin());  // node i has F ≤ f < node i + 1's
+  if (i == levels) return node_delta(cell, levels) + (f - node_force(levels)) / node_slope(cell, levels);
+  return solve_on_segment(cell, i, 0.0, 1.0, f);
+}
+
+double CellContactLaws::compression_of(std::size_t cell, double y, double c) const {
+  if (!(y > 0.0)) return 0.0;
+  // The node i with δ_i + c·F_i ≤ y < the next one's (increasing in i).
+  int lo = 0, hi = levels + 1;
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    if (node_delta(cell, mid) + c * node_force(mid) <= y) lo = mid;
+    else hi = mid;
+  }
+  if (lo == levels) {
+    const double d = node_delta(cell, levels), s = node_slope(cell, levels);
+    return d + (y - d - c * node_force(levels)) / (1.0 + c * s);
+  }
+  return solve_on_segment(cell, lo, 1.0, c, y);
+}
+
+double CellContactLaws::stored_energy(std::size_t cell, double delta) const {
+  // ∫ of the cubic Hermite segments: h·[f0(t − t³ + t⁴/2) + h·m0(t²/2 − 2t³/3 + t⁴/4)
+  // + f1(t³ − t⁴/2) + h·m1(t⁴/4 − t³/3)] from 0 to t.
+  const int last = segment_of(cell, delta);
+  double sum = 0.0;
+  for (int i = 0; i <= std::min(last, levels - 1); ++i) {
+    const double d0 = node_delta(cell, i), h = node_delta(cell, i + 1) - d0;
+    const double t = i < last ? 1.0 : (delta - d0) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+    sum += h * (node_force(i) * (t - t3 + 0.5 * t4) + h * node_slope(cell, i) * (0.5 * t2 - 2.0 * t3 / 3.0 + 0.25 * t4) +
+                node_force(i + 1) * (t3 - 0.5 * t4) + h * node_slope(cell, i + 1) * (0.25 * t4 - t3 / 3.0));
+  }
+  if (last == levels) {
+    const double d = delta - node_delta(cell, levels);
+    sum += d * (node_force(levels) + 0.5 * node_slope(cell, levels) * d);
+  }
+  return sum;
+}
+
+CellLawSprings::CellLawSprings(std::shared_ptr<const CellContactLaws> laws, Eigen::Index points)
+    : laws_(std::move(laws)), cell_(static_cast<std::size_t>(points), 0) {
+  if (!laws_ || laws_->cells() == 0) throw std::invalid_argument("CellLawSprings: no laws");
+}
+
+void CellLawSprings::evaluate(Eigen::Index p, double delta, double& force, double& slope) const {
+  laws_->force(cell_[static_cast<std::size_t>(p)], std::abs(delta), force, slope);
+  force = std::copysign(force, delta);
+}
+
+double CellLawSprings::compression_of(Eigen::Index p, double y, double c, double) const {
+  return std::copysign(laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c), y);
+}
+
+double CellLawSprings::compression_at(Eigen::Index p, double force) const {
+  return laws_->approach_at(cell_[static_cast<std::size_t>(p)], force);
+}
+
+double CellLawSprings::stored_energy(Eigen::Index p, double delta) const {
+  return laws_->stored_energy(cell_[static_cast<std::size_t>(p)], std::abs(delta));
+}
+
+}  // namespace rollnoise

@@ -1,0 +1,125 @@
+#include "contact/texture_contact_laws.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "contact/halfspace_load_path.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "road/road_surface.hpp"
+
+namespace rollnoise {
+namespace {
+
+// Positions per block: the road is read for a block in order along x, then its cells are solved
+// on the threads (a generated road keeps a few tiles, so reading it out of order costs).
+constexpr std::size_t kBlock = 256;
+
+std::string metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g m", value);
+  return text;
+}
+
+// δ_hs at force f on the piecewise linear path.
+double approach_on_path(const std::vector<LoadPathPoint>& path, double f) {
+  for (std::size_t e = 1; e < path.size(); ++e)
+    if (f <= path[e].force) {
+      const LoadPathPoint& a = path[e - 1];
+      const LoadPathPoint& b = path[e];
+      return b.force > a.force ? a.approach + (b.approach - a.approach) * (f - a.force) / (b.force - a.force) : b.approach;
+    }
+  return path.back().approach;
+}
+
+}  // namespace
+
+double pixel_height(const RoadSurface& road, double x, double y, double px, double py, std::size_t samples) {
+  const double n = static_cast<double>(samples);
+  double sum = 0.0;
+  for (std::size_t a = 0; a < samples; ++a)
+    for (std::size_t b = 0; b < samples; ++b)
+      sum += road.height(x + (static_cast<double>(a) + 0.5) * px / n, y + (static_cast<double>(b) + 0.5) * py / n);
+  return sum / (n * n);
+}
+
+CellPixels cell_pixels(double dx, double dy, std::optional<double> road_spacing, const std::string& source,
+                       const std::string& key) {
+  const double spacing = road_spacing.value_or(dx / 4.0);
+  if (spacing > dx / 4.0 * (1.0 + 1e-9))
+    throw InputError(source, key,
+                     "the road is sampled every " + metres(spacing) +
+                         ", fewer than 4 samples across a contact cell of " + metres(dx) +
+                         ": the texture contact law needs a spacing of at most " + metres(dx / 4.0));
+  CellPixels p;
+  p.nx = 4;
+  p.ny = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(dy / (dx / 4.0))));
+  p.samples = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(dx / 4.0 / spacing)));
+  return p;
+}
+
+double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber) {
+  return rubber.youngs_modulus / (1.0 - rubber.poisson_ratio * rubber.poisson_ratio) * dx * dy;
+}
+
+std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
+                                                           CellPixels pixels, const TreadRubber& rubber, int threads,
+                                                           ProgressReporter* progress) {
+  const std::size_t lines = grid.lines.size();
+  const std::size_t n = pixels.nx * pixels.ny;
+  if (lines == 0 || grid.positions == 0 || n == 0 || !(grid.dx > 0.0) || !(grid.dy > 0.0))
+    throw std::invalid_argument("make_texture_contact_laws: an empty grid");
+  const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
+  const double cap = contact_law_force_cap(grid.dx, grid.dy, rubber);
+  // The flat punch's compliance sets the floor of every law's compliance (cell_contact_law.hpp).
+  const HalfspaceLoadPath probe(pixels.nx, pixels.ny, px, py, rubber.youngs_modulus, rubber.poisson_ratio);
+  const double punch = probe.punch_compliance();
+  auto laws = std::make_shared<CellContactLaws>(grid.positions * lines, cap, 1e-3 * punch);
+  const int workers = std::max(1, threads);
+  std::vector<double> heights(kBlock * lines * n);
+  for (std::size_t first = 0; first < grid.positions; first += kBlock) {
+    const std::size_t count = std::min(kBlock, grid.positions - first);
+    for (std::size_t m = 0; m < count; ++m) {
+      const double xc = grid.x0 + static_cast<double>(first + m) * grid.step;
+      for (std::size_t j = 0; j < lines; ++j)
+        for (std::size_t a = 0; a < pixels.nx; ++a)
+          for (std::size_t b = 0; b < pixels.ny; ++b)
+            heights[((m * lines + j) * pixels.nx + a) * pixels.ny + b] =
+                pixel_height(road, xc - 0.5 * grid.dx + static_cast<double>(a) * px,
+                             grid.lines[j] - 0.5 * grid.dy + static_cast<double>(b) * py, px, py, pixels.samples);
+    }
+    // The block's cells, split evenly over the threads; each cell is solved on its own, so the
+    // split does not change a number.
+    const std::size_t cells = count * lines;
+    std::vector<std::exception_ptr> failures(static_cast<std::size_t>(workers));
+    const auto work = [&](int w) {
+      try {
+        HalfspaceLoadPath path(pixels.nx, pixels.ny, px, py, rubber.youngs_modulus, rubber.poisson_ratio);
+        std::vector<double> approaches(CellContactLaws::levels);
+        for (std::size_t c = static_cast<std::size_t>(w); c < cells; c += static_cast<std::size_t>(workers)) {
+          const std::span<const double> cell(heights.data() + c * n, n);
+          const std::vector<LoadPathPoint>& law = path.trace(cell, cap);
+          for (int k = 0; k < CellContactLaws::levels; ++k) {
+            const double f = laws->force_level(k);
+            approaches[static_cast<std::size_t>(k)] = std::max(0.0, approach_on_path(law, f) - punch * f);
+          }
+          laws->set(first * lines + c, *std::max_element(cell.begin(), cell.end()), approaches);
+        }
+      } catch (...) {
+        failures[static_cast<std::size_t>(w)] = std::current_exception();
+      }
+    };
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+    pool.clear();
+    for (const std::exception_ptr& failure : failures)
+      if (failure) std::rethrow_exception(failure);
+    if (progress) progress->update(first + count);
+  }
+  return laws;
+}
+
+}  // namespace rollnoise

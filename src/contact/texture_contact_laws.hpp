@@ -1,0 +1,60 @@
+#pragma once
+// The per-cell contact laws of a road (cell_contact_law.hpp) for the cells a rolling tyre's
+// contact points meet: cells dx × dy centred at x₀ + m·step along the road (m = 0 … positions − 1)
+// on each lateral line y_j, each solved exactly on a pixel grid of the road's own sample spacing
+// (halfspace_load_path.hpp). Cell index: m·lines + j.
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/cell_contact_law.hpp"
+
+namespace rollnoise {
+
+class RoadSurface;
+class ProgressReporter;
+
+// The tread rubber the road's texture meets: E at the contact's time scale and ν.
+struct TreadRubber {
+  double youngs_modulus = 0.0;  // Pa
+  double poisson_ratio = 0.0;
+};
+
+struct ContactCellGrid {
+  double dx = 0.0, dy = 0.0;    // cell size along and across the road, m
+  double x0 = 0.0, step = 0.0;  // centre of position 0 and the spacing of positions, m
+  std::size_t positions = 0;
+  std::vector<double> lines;    // y of each lateral line's cell centres, m
+};
+
+// The pixels of a cell: 4 along the road (dx/4, sub-millimetre for dx < 4 mm) and as many of the
+// same size across as fit dy. Each pixel's height is the mean of the road's samples inside it
+// (samples × samples of the road's own spacing): the texture is coarse-grained to the pixels, as
+// a low-pass, so that the exact contact of a cell stays at about 60 pixels (its cost grows as
+// their cube) while every sample of the road counts. A road sampled coarser than dx/4 cannot
+// show the texture inside a cell: an InputError naming `key` in `source`, with the spacing
+// needed.
+struct CellPixels {
+  std::size_t nx = 0, ny = 0;
+  std::size_t samples = 1;  // road samples per pixel along each axis
+};
+CellPixels cell_pixels(double dx, double dy, std::optional<double> road_spacing, const std::string& source,
+                       const std::string& key);
+
+// A pixel's height: the mean of samples × samples road heights over the pixel [x, x + px] ×
+// [y, y + py] (at the centres of its sub-pixels).
+double pixel_height(const RoadSurface& road, double x, double y, double px, double py, std::size_t samples);
+
+// The force at which a law's table ends (extrapolated linearly beyond): the pressure E* over
+// the cell, a strain of order one, far above any cell's force in rolling.
+double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber);
+
+// Every cell's law, on `threads` threads (positions in blocks, the road read in order along x).
+// The same road, grid and rubber give the same laws for any thread count.
+std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
+                                                           CellPixels pixels, const TreadRubber& rubber, int threads,
+                                                           ProgressReporter* progress = nullptr);
+
+}  // namespace rollnoise
