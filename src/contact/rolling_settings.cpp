@@ -57,6 +57,11 @@ TyreRollingSettings read_tyre_rolling_settings(const ConfigTable& rolling) {
   s.road_sampling = sampling == "point" ? RoadSampling::point
                     : sampling == "lowpass" ? RoadSampling::lowpass
                                             : RoadSampling::cell_mean;
+  s.contact_law = rolling.choice("contact_law", {"rigid", "texture"}, "rigid") == "texture" ? ContactLaw::texture
+                                                                                             : ContactLaw::rigid;
+  if (s.contact_law == ContactLaw::texture && rolling.contains("road_sampling"))
+    rolling.fail("road_sampling", "applies to contact_law = \"rigid\" only: with \"texture\" each cell meets the road "
+                                  "at its highest point; remove one of the two");
   if (s.band_top != 0.0 && (s.band_top < 100.0 || s.band_top > 20000.0))
     rolling.fail("band_top", "must be 0 (one cell per step) or a band centre from 100 to 20000 Hz");
   if (rolling.contains("time_step")) {

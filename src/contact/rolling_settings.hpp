@@ -49,6 +49,9 @@ struct TyreRollingSettings {
   // road_sampling = "lowpass" (default) | "cell_mean" | "point" (before issue 10 §3): how the
   // contact points read texture finer than the cells (rolling_tyre.hpp, RoadSampling).
   RoadSampling road_sampling = RoadSampling::lowpass;
+  // contact_law = "rigid" (default) | "texture": how a cell meets the texture inside it
+  // (rolling_tyre.hpp, ContactLaw).
+  ContactLaw contact_law = ContactLaw::rigid;
 };
 
 // The upper edge f_2 of the third-octave band nearest `band_top` (IEC 61260-1; 5623 Hz for the

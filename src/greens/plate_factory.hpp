@@ -13,8 +13,10 @@ struct TreadSettings {
   enum class Type { winkler, halfspace, nonlinear };
   Type type = Type::winkler;
   double stiffness_per_area = 0.0;  // winkler: N/m³
-  double youngs_modulus = 0.0;      // halfspace: Pa
-  double poisson_ratio = 0.0;       // halfspace
+  // halfspace: the tread's Pa and ν; any type: the rubber that the texture contact law presses
+  // onto the road (optional for winkler and nonlinear; 0: not given).
+  double youngs_modulus = 0.0;
+  double poisson_ratio = 0.0;
   double spring_stiffness = 0.0;    // nonlinear: N/m^exponent per m² of cell (k_p = this·dx·dy)
   double spring_exponent = 1.0;     // nonlinear: n ≥ 1
 };

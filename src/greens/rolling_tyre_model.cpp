@@ -28,6 +28,8 @@ RollingTyreModel plate_model(const ConfigTable& tyre) {
   out.tread_width = file.tread_width;
   out.tread = file.tread;
   out.plate = file.plate;
+  out.tread_youngs_modulus = file.tread.youngs_modulus;
+  out.tread_poisson_ratio = file.tread.poisson_ratio;
   out.belt_tension = file.plate.tension_x;
   out.belt_bending = file.plate.bending_x;
   out.foundation_stiffness = file.plate.foundation_stiffness;
@@ -107,6 +109,8 @@ RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
     RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), from_cache, cache_directory, fit_key);
     out.crown_radius = p.crown_radius;
     out.tread_width = p.tread_width > 0.0 ? p.tread_width : p.width;
+    out.tread_youngs_modulus = p.tread_youngs_modulus;
+    out.tread_poisson_ratio = p.tread_poisson_ratio;
     out.belt_tension = p.tension_x;
     // E_x·h³/12: the belt's bending along the circumference (the plate file's bending_x).
     out.belt_bending = p.belt.youngs_x * p.belt_thickness * p.belt_thickness * p.belt_thickness / 12.0;

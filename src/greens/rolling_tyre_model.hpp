@@ -30,6 +30,11 @@ struct RollingTyreModel {
   // The plate's separate tread ([tyre.tread]); absent for models that include their tread.
   std::optional<TreadSettings> tread;
   std::optional<PlateParameters> plate;  // the plate's parameters (the energy budget's estimates)
+  // The tread rubber's E (Pa) and ν at the contact's time scale, which the road's fine texture
+  // meets ([rolling] contact_law = "texture"): the two-layer tyre's tread layer, the plate's
+  // [tyre.tread] youngs_modulus and poisson_ratio. 0: not given.
+  double tread_youngs_modulus = 0.0;
+  double tread_poisson_ratio = 0.0;
   // The belt's membrane tension, bending stiffness along the circumference and foundation: the
   // radiating body's deflected shape beyond the patch (tyre_surface_mesh.hpp).
   double belt_tension = 0.0;          // N/m

@@ -1,6 +1,7 @@
 #include "simulation/tyre_simulation.hpp"
 
 #include <algorithm>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -271,6 +272,19 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                      options.progress, options.progress_sink);
   TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
                       settings.road_sampling};
+  run.contact_law = settings.contact_law;
+  if (run.contact_law == ContactLaw::texture) {
+    if (!(model.tread_youngs_modulus > 0.0))
+      throw InputError(tyre.source_of(model.model == "plate" ? "tread" : "tread_youngs_modulus"),
+                       model.model == "plate" ? "[tyre.tread] youngs_modulus" : "[tyre] tread_youngs_modulus",
+                       "is needed by [rolling] contact_law = \"texture\": the tread rubber's modulus at the contact's "
+                       "time scale (Pa), with poisson_ratio");
+    run.rubber = TreadRubber{model.tread_youngs_modulus, model.tread_poisson_ratio};
+    // A road too coarse for the cells is refused now, naming the road's file, not after the setup.
+    (void)cell_pixels(grid.dx(), grid.dy(), road->sample_spacing(), road_table.source_of("sample_spacing"),
+                      "[road] sample_spacing");
+    run.law_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  }
   run.keep_fields = false;  // streamed through the step outputs below
   std::unique_ptr<NonlinearTread> springs;
   if (model.tread && model.tread->type == TreadSettings::Type::nonlinear) {
@@ -390,6 +404,21 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   summary["lagged_skew_growth"] = trace.lagged_skew_growth;
   summary["contact_step"] = trace.skew_part_lagged ? "symmetric LCP, G0's skew part one step late"
                                                    : "P-matrix LCP with the whole G0";
+  if (settings.contact_law == ContactLaw::texture) {
+    summary["contact_step"] = trace.skew_part_lagged
+                                  ? "texture laws in series (Newton over contact sets), G0's skew part one step late"
+                                  : "texture laws in series (Newton over contact sets) with the whole G0";
+    summary["texture_contact_law"] = {{"cells", trace.law_cells},
+                                      {"pixels_along", trace.law_pixels.nx},
+                                      {"pixels_across", trace.law_pixels.ny},
+                                      {"road_samples_per_pixel", trace.law_pixels.samples},
+                                      {"pixel_m", grid.dx() / static_cast<double>(trace.law_pixels.nx)},
+                                      {"tread_youngs_modulus_Pa", model.tread_youngs_modulus},
+                                      {"tread_poisson_ratio", model.tread_poisson_ratio},
+                                      {"force_cap_N", trace.law_force_cap},
+                                      {"largest_cell_force_N", trace.largest_cell_force},
+                                      {"seconds", trace.law_seconds}};
+  }
   summary["grid"] = {{"points_circumferential", grid.circumferential},
                      {"points_lateral", grid.lateral},
                      {"contact_window_points", grid.window},
@@ -403,6 +432,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                          {"road_sampling", settings.road_sampling == RoadSampling::point       ? "point"
                                            : settings.road_sampling == RoadSampling::lowpass ? "lowpass"
                                                                                              : "cell_mean"},
+                         {"contact_law", settings.contact_law == ContactLaw::texture ? "texture" : "rigid"},
                          {"band_top_hz", settings.band_top},
                          {"contact_nyquist_hz", 0.5 / dt},
                          {"steps", steps},
