@@ -15,18 +15,21 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 }  // namespace
 
 CellContactLaws::CellContactLaws(std::size_t cells, double force_cap, double minimum_compliance)
-    : cap_(force_cap), minimum_compliance_(minimum_compliance), top_(cells, 0.0), approach_(cells * levels, 0.0f) {
+    : cap_(force_cap),
+      minimum_compliance_(minimum_compliance),
+      top_(cells, 0.0),
+      approach_(cells * levels, 0.0f),
+      slope_(cells * (levels + 1), 0.0f),
+      energy_(cells * levels, 0.0) {
   if (!(force_cap > 0.0) || !std::isfinite(force_cap))
     throw std::invalid_argument("CellContactLaws: the force cap must be finite and > 0");
   if (!(minimum_compliance > 0.0) || !std::isfinite(minimum_compliance))
     throw std::invalid_argument("CellContactLaws: the minimum compliance must be finite and > 0");
   forces_.resize(levels);
   for (int k = 0; k < levels; ++k) forces_[static_cast<std::size_t>(k)] = force_cap * std::pow(10.0, (k - levels + 1) / 4.0);
-  for (std::size_t c = 0; c < cells; ++c) {  // a valid law until set: the minimum compliance alone
-    for (int k = 0; k < levels; ++k)
-      approach_[c * levels + static_cast<std::size_t>(k)] =
-          static_cast<float>(minimum_compliance * forces_[static_cast<std::size_t>(k)]);
-  }
+  // A valid law until set: the minimum compliance alone.
+  const std::vector<double> linear(levels, 0.0);
+  for (std::size_t c = 0; c < cells; ++c) set(c, 0.0, linear);
 }
 
 void CellContactLaws::set(std::size_t cell, double top, std::span<const double> approaches) {
@@ -49,13 +52,18 @@ void CellContactLaws::set(std::size_t cell, double top, std::span<const double> 
     previous_force = f;
     previous_stored = stored;
   }
+  for (int i = 0; i <= levels; ++i)
+    slope_[cell * (levels + 1) + static_cast<std::size_t>(i)] = static_cast<float>(monotone_slope(cell, i));
+  // ∫ of each cubic Hermite segment: h·[(f0 + f1)/2 + h·(m0 − m1)/12].
+  double energy = 0.0;
+  for (int i = 0; i < levels; ++i) {
+    const double h = node_delta(cell, i + 1) - node_delta(cell, i);
+    energy += h * (0.5 * (node_force(i) + node_force(i + 1)) + h * (node_slope(cell, i) - node_slope(cell, i + 1)) / 12.0);
+    energy_[cell * levels + static_cast<std::size_t>(i)] = energy;
+  }
 }
 
-double CellContactLaws::node_delta(std::size_t cell, int i) const noexcept {
-  return i == 0 ? 0.0 : static_cast<double>(approach_[cell * levels + static_cast<std::size_t>(i - 1)]);
-}
-
-double CellContactLaws::node_slope(std::size_t cell, int i) const noexcept {
+double CellContactLaws::monotone_slope(std::size_t cell, int i) const noexcept {
   const auto secant = [&](int s) {
     return (node_force(s + 1) - node_force(s)) / (node_delta(cell, s + 1) - node_delta(cell, s));
   };
@@ -95,21 +103,25 @@ void CellContactLaws::force(std::size_t cell, double delta, double& force, doubl
 }
 
 double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, double c, double target) const {
-  double lo = node_delta(cell, i), hi = node_delta(cell, i + 1);
-  double delta = 0.5 * (lo + hi);
+  // The segment's cubic in t = (δ − d0)/h, fixed once: Newton in t, safeguarded by the bracket.
+  const double d0 = node_delta(cell, i), h = node_delta(cell, i + 1) - d0;
+  const double f0 = node_force(i), f1 = node_force(i + 1);
+  const double hm0 = h * node_slope(cell, i), hm1 = h * node_slope(cell, i + 1);
+  double lo = 0.0, hi = 1.0, t = 0.5;
   for (int iteration = 0; iteration < 100; ++iteration) {
-    double f = 0.0, slope = 0.0;
-    force(cell, delta, f, slope);
-    const double g = w * delta + c * f - target;
-    if (g > 0.0) hi = delta;
-    else lo = delta;
-    const double derivative = w + c * slope;
-    double next = derivative > 0.0 ? delta - g / derivative : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton safeguarded by the bracket
-    if (std::abs(next - delta) <= 4.0 * kEps * std::max(delta, hi) || hi - lo <= 4.0 * kEps * hi) return next;
-    delta = next;
+    const double t2 = t * t, t3 = t2 * t;
+    const double f = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * hm0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * hm1;
+    const double df = (6 * t2 - 6 * t) * (f0 - f1) + (3 * t2 - 4 * t + 1) * hm0 + (3 * t2 - 2 * t) * hm1;  // dF/dt
+    const double g = w * (d0 + h * t) + c * f - target;
+    if (g > 0.0) hi = t;
+    else lo = t;
+    const double derivative = w * h + c * df;
+    double next = derivative > 0.0 ? t - g / derivative : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - t) <= 4.0 * kEps || hi - lo <= 4.0 * kEps) return d0 + h * next;
+    t = next;
   }
-  return delta;
+  return d0 + h * t;
 }
 
 double CellContactLaws::approach_at(std::size_t cell, double f) const {
@@ -137,21 +149,19 @@ double CellContactLaws::compression_of(std::size_t cell, double y, double c) con
 }
 
 double CellContactLaws::stored_energy(std::size_t cell, double delta) const {
-  // ∫ of the cubic Hermite segments: h·[f0(t − t³ + t⁴/2) + h·m0(t²/2 − 2t³/3 + t⁴/4)
-  // + f1(t³ − t⁴/2) + h·m1(t⁴/4 − t³/3)] from 0 to t.
-  const int last = segment_of(cell, delta);
-  double sum = 0.0;
-  for (int i = 0; i <= std::min(last, levels - 1); ++i) {
-    const double d0 = node_delta(cell, i), h = node_delta(cell, i + 1) - d0;
-    const double t = i < last ? 1.0 : (delta - d0) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
-    sum += h * (node_force(i) * (t - t3 + 0.5 * t4) + h * node_slope(cell, i) * (0.5 * t2 - 2.0 * t3 / 3.0 + 0.25 * t4) +
-                node_force(i + 1) * (t3 - 0.5 * t4) + h * node_slope(cell, i + 1) * (0.25 * t4 - t3 / 3.0));
+  // The nodes' energies, then the part of the segment: ∫₀^t of the cubic Hermite basis,
+  // h·[f0(t − t³ + t⁴/2) + h·m0(t²/2 − 2t³/3 + t⁴/4) + f1(t³ − t⁴/2) + h·m1(t⁴/4 − t³/3)].
+  const int i = segment_of(cell, delta);
+  const double d0 = node_delta(cell, i);
+  if (i == levels) {
+    const double d = delta - d0;
+    return node_energy(cell, levels) + d * (node_force(levels) + 0.5 * node_slope(cell, levels) * d);
   }
-  if (last == levels) {
-    const double d = delta - node_delta(cell, levels);
-    sum += d * (node_force(levels) + 0.5 * node_slope(cell, levels) * d);
-  }
-  return sum;
+  const double h = node_delta(cell, i + 1) - d0;
+  const double t = (delta - d0) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+  return node_energy(cell, i) +
+         h * (node_force(i) * (t - t3 + 0.5 * t4) + h * node_slope(cell, i) * (0.5 * t2 - 2.0 * t3 / 3.0 + 0.25 * t4) +
+              node_force(i + 1) * (t3 - 0.5 * t4) + h * node_slope(cell, i + 1) * (0.25 * t4 - t3 / 3.0));
 }
 
 CellLawSprings::CellLawSprings(std::shared_ptr<const CellContactLaws> laws, Eigen::Index points)

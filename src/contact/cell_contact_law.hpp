@@ -17,7 +17,10 @@
 // coupling of neighbouring cells' roughness through the rubber (each cell's law is its own).
 //
 // Storage. δ_sub at `levels` forces F_k = cap·10^{(k − levels + 1)/4}, the same for every cell
-// (cap: the force at which the law ends, extrapolated linearly beyond), as floats. δ_sub is held
+// (cap: the force at which the law ends, extrapolated linearly beyond), as floats, with the
+// cubic's slope at each node (float) and the energy ∫F dδ up to each node (double, so that the
+// Newton step's energy has no jumps at the nodes), all fixed when the cell is set: a contact
+// step evaluates each law several times per point and iteration. δ_sub is held
 // at least `minimum_compliance` per newton steeper than flat (a cell fully in contact would
 // otherwise be rigid at once; 1e-3 of the punch's compliance, a negligible softening), so F(δ)
 // is a strictly increasing function. F(δ) between the nodes (0, 0), (δ_0, F_0), … is the monotone
@@ -61,10 +64,19 @@ class CellContactLaws {
   double compression_of(std::size_t cell, double y, double c) const;
 
  private:
-  // The node i of cell c (0: the origin), its slope (Fritsch–Carlson), and the segment of δ.
-  double node_delta(std::size_t cell, int i) const noexcept;
+  // The node i of cell c (0: the origin), its slope, and the segment of δ.
+  double node_delta(std::size_t cell, int i) const noexcept {
+    return i == 0 ? 0.0 : static_cast<double>(approach_[cell * levels + static_cast<std::size_t>(i - 1)]);
+  }
   double node_force(int i) const noexcept { return i == 0 ? 0.0 : forces_[static_cast<std::size_t>(i - 1)]; }
-  double node_slope(std::size_t cell, int i) const noexcept;
+  double node_slope(std::size_t cell, int i) const noexcept {
+    return static_cast<double>(slope_[cell * (levels + 1) + static_cast<std::size_t>(i)]);
+  }
+  double node_energy(std::size_t cell, int i) const noexcept {
+    return i == 0 ? 0.0 : energy_[cell * levels + static_cast<std::size_t>(i - 1)];
+  }
+  // The Fritsch–Carlson slope at node i from the nodes (at set()).
+  double monotone_slope(std::size_t cell, int i) const noexcept;
   int segment_of(std::size_t cell, double delta) const noexcept;
   // δ on segment i (nodes i, i + 1) with w·δ + c·F(δ) = target (w, c ≥ 0, not both 0).
   double solve_on_segment(std::size_t cell, int i, double w, double c, double target) const;
@@ -72,7 +84,9 @@ class CellContactLaws {
   double cap_, minimum_compliance_;
   std::vector<double> forces_;
   std::vector<double> top_;
-  std::vector<float> approach_;
+  std::vector<float> approach_;  // levels a cell
+  std::vector<float> slope_;     // levels + 1 a cell
+  std::vector<double> energy_;   // levels a cell
 };
 
 // The laws as the springs of a contact step: point p follows the law of the cell that assign()

@@ -12,6 +12,34 @@
 
 namespace rollnoise {
 
+double approach_at_force(const std::vector<LoadPathPoint>& path, double force) {
+  for (std::size_t e = 1; e < path.size(); ++e)
+    if (force <= path[e].force) {
+      const LoadPathPoint& a = path[e - 1];
+      const LoadPathPoint& b = path[e];
+      return b.force > a.force ? a.approach + (b.approach - a.approach) * (force - a.force) / (b.force - a.force)
+                               : b.approach;
+    }
+  const LoadPathPoint& a = path[path.size() - 2];
+  const LoadPathPoint& b = path.back();
+  return b.approach + (b.approach - a.approach) * (force - b.force) / (b.force - a.force);
+}
+
+PathState state_at_approach(const std::vector<LoadPathPoint>& path, double approach) {
+  for (std::size_t e = 1; e < path.size(); ++e)
+    if (approach <= path[e].approach) {
+      const LoadPathPoint& a = path[e - 1];
+      const LoadPathPoint& b = path[e];
+      const double f = b.approach > a.approach
+                           ? a.force + (b.force - a.force) * (approach - a.approach) / (b.approach - a.approach)
+                           : b.force;
+      return {f, a.contacts};
+    }
+  const LoadPathPoint& a = path[path.size() - 2];
+  const LoadPathPoint& b = path.back();
+  return {b.force + (b.force - a.force) * (approach - b.approach) / (b.approach - a.approach), b.contacts};
+}
+
 HalfspaceLoadPath::HalfspaceLoadPath(std::size_t nx, std::size_t ny, double px, double py, double youngs_modulus,
                                      double poisson_ratio) {
   if (nx < 1 || ny < 1 || !(px > 0.0) || !(py > 0.0))

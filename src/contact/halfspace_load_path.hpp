@@ -32,6 +32,15 @@ struct LoadPathPoint {
   int contacts = 0;       // pixels in contact beyond this point (until the next)
 };
 
+// On a path: δ at force F, and F and the pixels in contact at approach δ (linear between the
+// events; beyond the last point, on along the last segment).
+double approach_at_force(const std::vector<LoadPathPoint>& path, double force);
+struct PathState {
+  double force = 0.0;
+  int contacts = 0;
+};
+PathState state_at_approach(const std::vector<LoadPathPoint>& path, double approach);
+
 class HalfspaceLoadPath {
  public:
   // An nx × ny grid of pixels px × py (m); the rubber's E (Pa) and ν.

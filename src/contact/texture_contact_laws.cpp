@@ -1,6 +1,7 @@
 #include "contact/texture_contact_laws.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <thread>
@@ -21,17 +22,6 @@ std::string metres(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g m", value);
   return text;
-}
-
-// δ_hs at force f on the piecewise linear path.
-double approach_on_path(const std::vector<LoadPathPoint>& path, double f) {
-  for (std::size_t e = 1; e < path.size(); ++e)
-    if (f <= path[e].force) {
-      const LoadPathPoint& a = path[e - 1];
-      const LoadPathPoint& b = path[e];
-      return b.force > a.force ? a.approach + (b.approach - a.approach) * (f - a.force) / (b.force - a.force) : b.approach;
-    }
-  return path.back().approach;
 }
 
 }  // namespace
@@ -64,19 +54,20 @@ double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber) {
   return rubber.youngs_modulus / (1.0 - rubber.poisson_ratio * rubber.poisson_ratio) * dx * dy;
 }
 
-std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
-                                                           CellPixels pixels, const TreadRubber& rubber, int threads,
-                                                           ProgressReporter* progress) {
+double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber) {
+  const HalfspaceLoadPath probe(pixels.nx, pixels.ny, grid.dx / static_cast<double>(pixels.nx),
+                                grid.dy / static_cast<double>(pixels.ny), rubber.youngs_modulus, rubber.poisson_ratio);
+  return probe.punch_compliance();
+}
+
+void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+                        const TreadRubber& rubber, double force_cap, int threads, const CellPathVisitor& visit,
+                        ProgressReporter* progress) {
   const std::size_t lines = grid.lines.size();
   const std::size_t n = pixels.nx * pixels.ny;
   if (lines == 0 || grid.positions == 0 || n == 0 || !(grid.dx > 0.0) || !(grid.dy > 0.0))
-    throw std::invalid_argument("make_texture_contact_laws: an empty grid");
+    throw std::invalid_argument("for_each_cell_path: an empty grid");
   const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
-  const double cap = contact_law_force_cap(grid.dx, grid.dy, rubber);
-  // The flat punch's compliance sets the floor of every law's compliance (cell_contact_law.hpp).
-  const HalfspaceLoadPath probe(pixels.nx, pixels.ny, px, py, rubber.youngs_modulus, rubber.poisson_ratio);
-  const double punch = probe.punch_compliance();
-  auto laws = std::make_shared<CellContactLaws>(grid.positions * lines, cap, 1e-3 * punch);
   const int workers = std::max(1, threads);
   std::vector<double> heights(kBlock * lines * n);
   for (std::size_t first = 0; first < grid.positions; first += kBlock) {
@@ -97,15 +88,9 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
     const auto work = [&](int w) {
       try {
         HalfspaceLoadPath path(pixels.nx, pixels.ny, px, py, rubber.youngs_modulus, rubber.poisson_ratio);
-        std::vector<double> approaches(CellContactLaws::levels);
         for (std::size_t c = static_cast<std::size_t>(w); c < cells; c += static_cast<std::size_t>(workers)) {
           const std::span<const double> cell(heights.data() + c * n, n);
-          const std::vector<LoadPathPoint>& law = path.trace(cell, cap);
-          for (int k = 0; k < CellContactLaws::levels; ++k) {
-            const double f = laws->force_level(k);
-            approaches[static_cast<std::size_t>(k)] = std::max(0.0, approach_on_path(law, f) - punch * f);
-          }
-          laws->set(first * lines + c, *std::max_element(cell.begin(), cell.end()), approaches);
+          visit(first * lines + c, path.trace(cell, force_cap), *std::max_element(cell.begin(), cell.end()));
         }
       } catch (...) {
         failures[static_cast<std::size_t>(w)] = std::current_exception();
@@ -119,6 +104,26 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
       if (failure) std::rethrow_exception(failure);
     if (progress) progress->update(first + count);
   }
+}
+
+std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
+                                                           CellPixels pixels, const TreadRubber& rubber, int threads,
+                                                           ProgressReporter* progress) {
+  const double cap = contact_law_force_cap(grid.dx, grid.dy, rubber);
+  // The flat punch's compliance sets the floor of every law's compliance (cell_contact_law.hpp).
+  const double punch = cell_punch_compliance(grid, pixels, rubber);
+  auto laws = std::make_shared<CellContactLaws>(grid.positions * grid.lines.size(), cap, 1e-3 * punch);
+  for_each_cell_path(
+      road, grid, pixels, rubber, cap, threads,
+      [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
+        std::array<double, CellContactLaws::levels> approaches{};
+        for (int k = 0; k < CellContactLaws::levels; ++k) {
+          const double f = laws->force_level(k);
+          approaches[static_cast<std::size_t>(k)] = std::max(0.0, approach_at_force(path, f) - punch * f);
+        }
+        laws->set(cell, top, approaches);
+      },
+      progress);
   return laws;
 }
 

@@ -4,12 +4,14 @@
 // on each lateral line y_j, each solved exactly on a pixel grid of the road's own sample spacing
 // (halfspace_load_path.hpp). Cell index: m·lines + j.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/cell_contact_law.hpp"
+#include "contact/halfspace_load_path.hpp"
 
 namespace rollnoise {
 
@@ -50,6 +52,17 @@ double pixel_height(const RoadSurface& road, double x, double y, double px, doub
 // The force at which a law's table ends (extrapolated linearly beyond): the pressure E* over
 // the cell, a strain of order one, far above any cell's force in rolling.
 double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber);
+
+// Visits every cell's exact law (halfspace_load_path.hpp) up to `force_cap`, on `threads`
+// threads: visit(cell, path, top) with cell = m·lines + j and the cell's first-touch height,
+// called from the worker threads, each cell once (a visitor writes only that cell's slots).
+// `punch_compliance` (optional) receives the cell's flat-punch compliance.
+using CellPathVisitor = std::function<void(std::size_t cell, const std::vector<LoadPathPoint>& path, double top)>;
+void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+                        const TreadRubber& rubber, double force_cap, int threads, const CellPathVisitor& visit,
+                        ProgressReporter* progress = nullptr);
+// The compliance of a flat punch of the cell's size on those pixels, 1/(1ᵀK⁻¹1), m/N.
+double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber);
 
 // Every cell's law, on `threads` threads (positions in blocks, the road read in order along x).
 // The same road, grid and rubber give the same laws for any thread count.

@@ -18,10 +18,9 @@ TreadSettings read_tread(const ConfigTable& tyre) {
   if (type == "winkler") {
     tread.type = TreadSettings::Type::winkler;
     tread.stiffness_per_area = t.positive("stiffness_per_area");
-    if (t.contains("youngs_modulus")) {
-      tread.youngs_modulus = t.positive("youngs_modulus");
-      tread.poisson_ratio = t.between("poisson_ratio", -1.0, 0.5, 0.48);
-    }
+    // The rubber the texture contact law presses onto the road: optional here.
+    if (t.contains("youngs_modulus")) tread.youngs_modulus = t.positive("youngs_modulus");
+    tread.poisson_ratio = t.between("poisson_ratio", -1.0, 0.5, 0.48);
   } else if (type == "halfspace") {
     tread.type = TreadSettings::Type::halfspace;
     tread.youngs_modulus = t.positive("youngs_modulus");

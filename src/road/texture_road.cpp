@@ -188,6 +188,7 @@ class TextureLineSurface final : public RoadSurface {
     if (x < 0.0) return 0.0;
     return lead_in_window(x, lead_in_) * (along_x_ ? line_.height(x) : line_.height(y + half_width_));
   }
+  std::optional<double> sample_spacing() const override { return line_.spacing(); }
 
  private:
   SampledProfile line_;

@@ -68,6 +68,7 @@ class TextureWaveSurface final : public RoadSurface {
   // Bilinear between the samples at (i·spacing, j·spacing); r = 0 for x < 0; x beyond the
   // period is a std::logic_error (the generator was told the run's range).
   double height(double x, double y) const override;
+  std::optional<double> sample_spacing() const override { return spacing_; }
   // The sample at x = i·spacing (i <= samples: the last repeats the first, times the lead-in
   // window), y = j·spacing.
   double sample(std::size_t i, long j) const;

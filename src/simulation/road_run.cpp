@@ -17,6 +17,7 @@
 #include "core/regular_file.hpp"
 #include "core/progress.hpp"
 #include "road/mean_profile_depth.hpp"
+#include "road/file_road.hpp"
 #include "road/profile_surface_road.hpp"
 #include "road/road_surface.hpp"
 #include "road/texture_road.hpp"
@@ -36,6 +37,7 @@ struct RoadUnderTest {
   nlohmann::json about;                           // a library surface's [about] table
   // Files the TOML input named outside their folder, through ".." or a symlink (referenced_file.hpp).
   std::vector<PathOutsideCaseFolder> paths_outside_folder;
+  std::optional<SurfaceContactLaw> contact_law;
 };
 
 nlohmann::json toml_to_json(const toml::table& table) {
@@ -87,8 +89,11 @@ RoadUnderTest generate(const RoadRunOptions& options) {
   const toml::table& road_toml = is_case ? *file->root()["road"].as_table() : file->root();
   RoadUnderTest out;
   if (const toml::table* about = road_toml["about"].as_table()) out.about = toml_to_json(*about);
-  const double half_width = options.lines > 1 ? options.width / 2.0 : 0.0;
+  const double half_width = options.lines > 1 || options.contact_law ? options.width / 2.0 : 0.0;
   const std::unique_ptr<RoadSurface> surface = make_road_surface(road, 0.0, options.length, half_width);
+  if (options.contact_law)
+    out.contact_law = surface_contact_law(*surface, options.length, options.width, *options.contact_law,
+                                          road.source_of("sample_spacing"), "[road] sample_spacing");
   if (road_toml["type"].value_or(std::string()) == "texture") out.target = texture_target(road_toml);
   // A surface from measured lines shows the record's levels as its target.
   if (const auto* measured = dynamic_cast<const ProfileSurfaceRoad*>(surface.get())) {
@@ -178,11 +183,24 @@ RoadRun analyse(RoadUnderTest road, const std::string& input, std::chrono::stead
                          {"lines", p.z_lines.size()},
                          {"y_m", p.y}};
   summary["rollnoise_version"] = ROLLNOISE_VERSION;
+  if (road.contact_law) {
+    const SurfaceContactLaw& law = *road.contact_law;
+    summary["contact_law"] = {{"cells", law.cell_x_m.size()},
+                              {"cell_dx_m", law.options.cell_dx},
+                              {"cell_dy_m", law.options.cell_dy},
+                              {"pixels_along", law.pixels.nx},
+                              {"pixels_across", law.pixels.ny},
+                              {"road_samples_per_pixel", law.pixels.samples},
+                              {"tread_youngs_modulus_Pa", law.options.rubber.youngs_modulus},
+                              {"tread_poisson_ratio", law.options.rubber.poisson_ratio},
+                              {"punch_compliance_m_per_N", law.punch_compliance}};
+  }
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   run.summary = std::move(summary);
   run.profile = std::move(road.profile);
   run.description = std::move(road.description);
   run.target = std::move(road.target);
+  run.contact_law = std::move(road.contact_law);
   return run;
 }
 
@@ -278,6 +296,19 @@ RoadRun run_road(const RoadRunOptions& options, const fs::path& out) {
   } else {
     road.profile = load_profile_file(input);
     road.description = "profile " + input.filename().string();
+    if (options.contact_law) {
+      // A measured line has no width: it is used on every line across the cells, fully
+      // correlated across (as a "file" road under a tyre), and only when the user says how wide.
+      if (!options.width_given)
+        throw InputError(options.input, "--contact-law",
+                         "a profile file is one line without a width: give --width, over which the line is repeated "
+                         "across, or make a surface from it ([road] type = \"profile_surface\")");
+      const LoadedProfile& p = road.profile;
+      const ProfileSurface surface(std::make_unique<FileRoad>(p.x, p.z_lines.front(), options.input));
+      const double length = p.x.back() - p.x.front();
+      road.contact_law = surface_contact_law(surface, length, options.width, *options.contact_law, options.input,
+                                             "--contact-law");
+    }
   }
   return analyse(std::move(road), options.input, started);
 }
@@ -313,6 +344,7 @@ void write_road_outputs(const fs::path& out, const RoadRun& road) {
   for (const TextureBand& b : road.analysis.texture) texture.emplace_back(b.nominal_wavelength_m, b.level_db);
   write_texture_csv(staged.staging() / "texture.csv", texture);
   if (!road.target.empty()) write_texture_csv(staged.staging() / "target.csv", road.target);
+  if (road.contact_law) write_surface_contact_law(staged.staging(), *road.contact_law);
   plot_road(staged.staging(), road, !road.target.empty());
   write_text_file(staged.staging() / "summary.json", road.summary.dump(2) + "\n");
   staged.commit();

@@ -17,6 +17,7 @@
 #include "core/referenced_file.hpp"
 #include "road/profile_analysis.hpp"
 #include "road/profile_file.hpp"
+#include "simulation/surface_contact_law.hpp"
 
 namespace rollnoise {
 
@@ -36,6 +37,10 @@ struct RoadRunOptions {
   int lines = 1;                       // lateral lines of a generated road
   double width = 0.16;                 // m, over which the lines are spread
   bool force = false;                  // generate even when the estimate exceeds the machine
+  bool width_given = false;            // --width was given (a profile file's contact law needs it)
+  // The contact law of cells tiled over the road (surface_contact_law.hpp), over `width` and
+  // `length`; a profile file's line is used across the width.
+  std::optional<SurfaceContactLawOptions> contact_law;
   ProgressSink* progress_sink = nullptr;
 };
 
@@ -45,6 +50,7 @@ struct RoadRun {
   std::vector<std::pair<double, double>> target;  // (wavelength m, L_tx dB) of a texture road
   ProfileAnalysis analysis;
   nlohmann::json summary;                         // what summary.json holds
+  std::optional<SurfaceContactLaw> contact_law;   // with RoadRunOptions::contact_law
 };
 
 // Generates or reads the road and analyses it. Bad input is an InputError naming the input (and
@@ -58,7 +64,8 @@ RoadRun run_road_heights(std::vector<std::vector<double>> z_lines, double spacin
                          const std::string& name);
 
 // Writes road.csv, texture.csv (target.csv for a texture road), summary.json and the plots into
-// `out`, atomically (core/output_directory.hpp).
+// `out`, atomically (core/output_directory.hpp); with a contact law, contact_law.csv and
+// contact_laws.h5.
 void write_road_outputs(const std::filesystem::path& out, const RoadRun& road);
 
 }  // namespace rollnoise

@@ -19,7 +19,7 @@ namespace {
 const std::vector<std::string>& known_keys(const std::string& section) {
   static const std::vector<std::string> rolling = {"speed", "duration", "time_step", "static_load", "history",
                                                   "discretisation", "points_circumferential", "points_lateral",
-                                                  "contact_window", "band_top", "road_sampling"};
+                                                  "contact_window", "band_top", "road_sampling", "contact_law"};
   static const std::vector<std::string> radiation = {
       "enabled",      "receivers",      "max_frequency",         "anchor_spacing",         "mesh_around",
       "mesh_across",  "sidewall_rings", "contact_refinement",    "threads",                "points_per_wavelength",

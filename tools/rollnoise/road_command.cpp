@@ -1,10 +1,13 @@
 #include "road_command.hpp"
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
+#include "core/error.hpp"
 #include "simulation/road_run.hpp"
 #include "number_checks.hpp"
 
@@ -35,6 +38,19 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
   cmd->add_option("--lines", options.lines, "Lateral lines of a generated road (default 1, the centre line)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--width", options.width, "Width over which the lines are spread, m (default 0.16)")
+      ->check(positive_number())
+      ->each([&options](const std::string&) { options.width_given = true; });
+  cmd->add_flag("--contact-law", options.contact_law,
+                "Also compute the contact law a tyre meets: cells --cell DX,DY tiled over --length x --width, "
+                "each the tread rubber (--tread-modulus, --tread-poisson) pressed onto the texture inside it; "
+                "writes contact_law.csv (the mean law and its spread) and contact_laws.h5 (every cell's table)");
+  cmd->add_option("--tread-modulus", options.tread_modulus, "Young's modulus of the tread rubber, Pa (with --contact-law)")
+      ->check(positive_number());
+  cmd->add_option("--tread-poisson", options.tread_poisson, "Poisson ratio of the tread rubber (default 0.48)")
+      ->check(CLI::Range(-0.999, 0.499));
+  cmd->add_option("--cell", options.cell, "Contact cell DX,DY along and across the road, m (with --contact-law)")
+      ->delimiter(',')
+      ->expected(2)
       ->check(positive_number());
   cmd->add_flag("--force", options.force,
                 "Generate the road even when the estimate of its memory or output (--length / --spacing "
@@ -43,7 +59,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       "Examples:\n"
       "  rollnoise road models/surfaces/dac11.toml --out out/dac11\n"
       "  rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat\n"
-      "  rollnoise road data/surfaces/captif-transverse/20231114_cpx_demo.csv");
+      "  rollnoise road data/surfaces/captif-transverse/20231114_cpx_demo.csv\n"
+      "  rollnoise road models/surfaces/dac11.toml --length 1 --contact-law --tread-modulus 4e6 --cell 0.00194,0.007");
   return cmd;
 }
 
@@ -59,12 +76,26 @@ int run_road(const RoadOptions& options) {
   run.lines = options.lines;
   run.width = options.width;
   run.force = options.force;
+  run.width_given = options.width_given;
+  if (options.contact_law) {
+    if (!(options.tread_modulus > 0.0))
+      throw InputError("command line", "--tread-modulus", "is needed with --contact-law: the tread rubber's E, Pa");
+    if (options.cell.size() != 2)
+      throw InputError("command line", "--cell", "is needed with --contact-law: DX,DY of a contact cell, m");
+    run.contact_law = SurfaceContactLawOptions{TreadRubber{options.tread_modulus, options.tread_poisson},
+                                               options.cell[0], options.cell[1],
+                                               static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))};
+  } else if (options.tread_modulus > 0.0 || !options.cell.empty()) {
+    throw InputError("command line", options.cell.empty() ? "--tread-modulus" : "--cell",
+                     "applies to --contact-law only");
+  }
   const RoadRun road = rollnoise::run_road(run, out);
   write_road_outputs(out, road);
   char mpd[32] = "n/a";
   if (road.analysis.mpd) std::snprintf(mpd, sizeof mpd, "%.2f mm", road.analysis.mpd->mpd_m * 1000.0);
-  std::printf("rollnoise: wrote %s (road.csv, texture.csv, summary.json and plots): MPD %s, RMS %.2f mm, skewness %+.2f\n",
-              out.string().c_str(), mpd, road.analysis.rms_m * 1000.0, road.analysis.skewness);
+  std::printf("rollnoise: wrote %s (road.csv, texture.csv, summary.json and plots%s): MPD %s, RMS %.2f mm, skewness %+.2f\n",
+              out.string().c_str(), road.contact_law ? ", contact_law.csv, contact_laws.h5" : "", mpd,
+              road.analysis.rms_m * 1000.0, road.analysis.skewness);
   return 0;
 }
 

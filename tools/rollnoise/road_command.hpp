@@ -21,6 +21,12 @@ struct RoadOptions {
   int lines = 1;                      // lateral lines of a generated road
   double width = 0.16;                // m across which the lines are spread
   bool force = false;                 // run even when the size estimate says it does not fit
+  bool width_given = false;
+  // --contact-law: the law of cells --cell DX,DY of the tread rubber (--tread-modulus, --tread-poisson)
+  bool contact_law = false;
+  double tread_modulus = 0.0;         // Pa
+  double tread_poisson = 0.48;
+  std::vector<double> cell;           // DX, DY (m)
 };
 
 CLI::App* add_road_command(CLI::App& app, RoadOptions& options);
