@@ -8,30 +8,41 @@
 # surface and speed (a finished run is kept: delete its folder, or pass --force, to redo it).
 # Needs a built tree (bash tools/setup.sh). Takes 1.5-2 min per run on 2 cores.
 #
+# Another tyre or contact: VALIDATION_CASE (a case file, default the plate's), VALIDATION_SET
+# ("rolling.contact_law=\"texture\" ...": --set for every run) and VALIDATION_OUT (the folder,
+# default out/validation), e.g.
+#   VALIDATION_CASE=models/cases/two_layer_rough_80kmh.toml VALIDATION_OUT=out/validation_two_layer \
+#     bash tools/validation.sh
+#
 # The measured values are those of docs/cpx_measurements.md, with their sources:
 #   [C1] Krivanek, Pavkova & Jedlicka (CDV), CPX at 50 km/h: SMA 11S 92.8, ACO 11S 89.8 dB(A)
 #   [C2] Flemish AWV CPX surveys (SRTT), 80 km/h: SMA-C 10 mm 99.6 (mean of 70), EACC 0/6.3 98.5
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rollnoise=${ROLLNOISE:-build/tools/rollnoise/rollnoise}
-out=out/validation
+out=${VALIDATION_OUT:-out/validation}
 force=0
 [[ "${1:-}" == "--force" ]] && force=1
 mkdir -p "$out"
-case=models/cases/plate_rough_80kmh.toml
-# VALIDATION_SURFACES="dac11 sma11 ..." runs a subset at 80 km/h.
+case=${VALIDATION_CASE:-models/cases/plate_rough_80kmh.toml}
+extra=()
+read -r -a settings <<< "${VALIDATION_SET:-}"
+for s in "${settings[@]}"; do extra+=(--set "$s"); done
+# VALIDATION_SURFACES="dac11 sma11 ..." runs a subset at 80 km/h, VALIDATION_SURFACES_50 at 50 km/h.
 read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined captif_fine}"
+read -r -a surfaces_50 <<< "${VALIDATION_SURFACES_50:-dac11 sma11 captif_fine}"
 
 run() {  # surface speed_kmh
   local dir="$out/$1_$2kmh"
   if [[ $force -eq 1 || ! -f "$dir/summary.json" ]]; then
     local speed
     speed=$(awk -v k="$2" 'BEGIN { printf "%.6f", k / 3.6 }')
-    "$rollnoise" simulate "$case" --out "$dir" --set "road.surface=models/surfaces/$1.toml" --set "rolling.speed=$speed"
+    "$rollnoise" simulate "$case" --out "$dir" --set "road.surface=models/surfaces/$1.toml" --set "rolling.speed=$speed" \
+      "${extra[@]}"
   fi
 }
 for s in "${surfaces[@]}"; do run "$s" 80; done
-for s in dac11 sma11 captif_fine; do run "$s" 50; done
+for s in "${surfaces_50[@]}"; do run "$s" 50; done
 
 # CPX level: 10 lg of the mean of 10^(LAeq/10) over cpx_front and cpx_rear (summary.json).
 cpx() {
@@ -88,7 +99,7 @@ set xtics (100, 200, 315, 500, 800, 1250, 2000, 3150, 5000)
 set xlabel 'third-octave band (Hz)'
 set ylabel 'LpA, CPX (energy mean of front and rear), dB(A)'
 set key outside right
-set title '205/55 R16 plate tyre, 80 km/h, 3200 N, 0.2 s, on each library surface'
+set title 'CASE_TITLE'
 surfaces = system("awk -F, 'NR > 1 && $2 == 80 && !seen[$1]++ { printf \"%s \", $1 }' spectra.csv")
 set yrange [50:110]
 # More surfaces than the default palette has colours: the ninth and later dashed.
@@ -96,5 +107,7 @@ dash(i) = i > 8 ? 2 : 1
 plot for [i=1:words(surfaces)] 'spectra.csv' using (strcol(1) eq word(surfaces, i) && $2 == 80 ? $3 : 1/0):4 \
        with linespoints lc i dt dash(i) pt 7 ps 0.6 title word(surfaces, i)
 GP
+title="205/55 R16, $(basename "$case" .toml), 80 km/h, 3200 N, 0.2 s${VALIDATION_SET:+, $VALIDATION_SET}, on each library surface"
+sed -i "s|CASE_TITLE|${title//\"/}|" "$out/cpx_spectra_surfaces.gp"
 if command -v gnuplot > /dev/null; then (cd "$out" && gnuplot cpx_spectra_surfaces.gp); fi
 cat "$out/validation_table.md"

@@ -108,6 +108,9 @@ double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, doub
   const double f0 = node_force(i), f1 = node_force(i + 1);
   const double hm0 = h * node_slope(cell, i), hm1 = h * node_slope(cell, i + 1);
   double lo = 0.0, hi = 1.0, t = 0.5;
+  // δ = d0 + h·t is known to its round-off, eps·δ: in t, eps·(d0 + h)/h, which is far above eps
+  // on a short segment far from the origin (stopping at eps in t would bisect to the end).
+  const double resolution = 4.0 * kEps * (d0 + h) / h;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double t2 = t * t, t3 = t2 * t;
     const double f = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * hm0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * hm1;
@@ -118,7 +121,7 @@ double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, doub
     const double derivative = w * h + c * df;
     double next = derivative > 0.0 ? t - g / derivative : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - t) <= 4.0 * kEps || hi - lo <= 4.0 * kEps) return d0 + h * next;
+    if (std::abs(next - t) <= resolution || hi - lo <= resolution) return d0 + h * next;
     t = next;
   }
   return d0 + h * t;
