@@ -48,7 +48,9 @@ void CellContactLaws::set(std::size_t cell, double top, std::span<const double> 
     float stored = static_cast<float>(delta);
     if (!(stored > previous_stored)) stored = std::nextafter(previous_stored, std::numeric_limits<float>::infinity());
     approach_[cell * levels + static_cast<std::size_t>(k)] = stored;
-    previous_delta = delta;
+    // The floor from the stored value, so that setting a cell from its stored approaches (the
+    // cache) gives the same floats.
+    previous_delta = static_cast<double>(stored);
     previous_force = f;
     previous_stored = stored;
   }

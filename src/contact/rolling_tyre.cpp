@@ -296,7 +296,9 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     cells.positions = road_positions + samples - 1;
     for (int j = 0; j < grid.lateral; ++j) cells.lines.push_back(grid.y(j) - 0.5 * grid.width);
     trace.law_pixels = cell_pixels(cells.dx, cells.dy, road.sample_spacing(), "", "[road] sample_spacing");
-    laws = make_texture_contact_laws(road, cells, trace.law_pixels, settings.rubber, settings.law_threads);
+    const TextureLawCache cache{settings.law_cache, &trace.laws_from_cache, &trace.warnings};
+    laws = make_texture_contact_laws(road, cells, trace.law_pixels, settings.rubber, settings.law_threads, nullptr,
+                                     &cache);
     trace.law_cells = laws->cells();
     trace.law_force_cap = laws->force_cap();
     trace.law_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -72,6 +72,7 @@ struct TyreRunSettings {
   ContactLaw contact_law = ContactLaw::rigid;
   TreadRubber rubber = {};  // the texture law's rubber (E at the contact's time scale, ν)
   int law_threads = 1;  // threads that compute the laws before the run
+  std::optional<std::filesystem::path> law_cache = {};  // where the laws are kept between runs (none: not kept)
 };
 
 struct TyreContactTrace {
@@ -112,6 +113,7 @@ struct TyreContactTrace {
   std::size_t law_cells = 0;
   CellPixels law_pixels = {};
   double law_seconds = 0.0;
+  bool laws_from_cache = false;
   double law_force_cap = 0.0;
   double largest_cell_force = 0.0;
 };

@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <thread>
 
+#include "contact/contact_law_cache.hpp"
 #include "contact/halfspace_load_path.hpp"
+#include "core/fnv_digest.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "road/road_surface.hpp"
@@ -54,6 +57,39 @@ double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber) {
   return rubber.youngs_modulus / (1.0 - rubber.poisson_ratio * rubber.poisson_ratio) * dx * dy;
 }
 
+void fill_block_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels, std::size_t first,
+                        std::size_t count, std::vector<double>& heights) {
+  const std::size_t lines = grid.lines.size();
+  const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
+  for (std::size_t m = 0; m < count; ++m) {
+    const double xc = grid.x0 + static_cast<double>(first + m) * grid.step;
+    for (std::size_t j = 0; j < lines; ++j)
+      for (std::size_t a = 0; a < pixels.nx; ++a)
+        for (std::size_t b = 0; b < pixels.ny; ++b)
+          heights[((m * lines + j) * pixels.nx + a) * pixels.ny + b] =
+              pixel_height(road, xc - 0.5 * grid.dx + static_cast<double>(a) * px,
+                           grid.lines[j] - 0.5 * grid.dy + static_cast<double>(b) * py, px, py, pixels.samples);
+  }
+}
+
+std::uint64_t texture_law_digest(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+                                 const TreadRubber& rubber) {
+  FnvDigest d;
+  d.text("texture contact laws");
+  d.unsigned_integer(CellContactLaws::levels);
+  for (const double v : {rubber.youngs_modulus, rubber.poisson_ratio, grid.dx, grid.dy, grid.x0, grid.step}) d.real(v);
+  for (const std::size_t v : {pixels.nx, pixels.ny, pixels.samples, grid.positions, grid.lines.size()}) d.unsigned_integer(v);
+  for (const double y : grid.lines) d.real(y);
+  const std::size_t n = pixels.nx * pixels.ny;
+  std::vector<double> heights(kBlock * grid.lines.size() * n);
+  for (std::size_t first = 0; first < grid.positions; first += kBlock) {
+    const std::size_t count = std::min(kBlock, grid.positions - first);
+    fill_block_heights(road, grid, pixels, first, count, heights);
+    d.words(reinterpret_cast<const char*>(heights.data()), count * grid.lines.size() * n * sizeof(double));
+  }
+  return d.value();
+}
+
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber) {
   const HalfspaceLoadPath probe(pixels.nx, pixels.ny, grid.dx / static_cast<double>(pixels.nx),
                                 grid.dy / static_cast<double>(pixels.ny), rubber.youngs_modulus, rubber.poisson_ratio);
@@ -72,15 +108,7 @@ void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, Ce
   std::vector<double> heights(kBlock * lines * n);
   for (std::size_t first = 0; first < grid.positions; first += kBlock) {
     const std::size_t count = std::min(kBlock, grid.positions - first);
-    for (std::size_t m = 0; m < count; ++m) {
-      const double xc = grid.x0 + static_cast<double>(first + m) * grid.step;
-      for (std::size_t j = 0; j < lines; ++j)
-        for (std::size_t a = 0; a < pixels.nx; ++a)
-          for (std::size_t b = 0; b < pixels.ny; ++b)
-            heights[((m * lines + j) * pixels.nx + a) * pixels.ny + b] =
-                pixel_height(road, xc - 0.5 * grid.dx + static_cast<double>(a) * px,
-                             grid.lines[j] - 0.5 * grid.dy + static_cast<double>(b) * py, px, py, pixels.samples);
-    }
+    fill_block_heights(road, grid, pixels, first, count, heights);
     // The block's cells, split evenly over the threads; each cell is solved on its own, so the
     // split does not change a number.
     const std::size_t cells = count * lines;
@@ -108,11 +136,23 @@ void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, Ce
 
 std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
                                                            CellPixels pixels, const TreadRubber& rubber, int threads,
-                                                           ProgressReporter* progress) {
+                                                           ProgressReporter* progress, const TextureLawCache* cache) {
   const double cap = contact_law_force_cap(grid.dx, grid.dy, rubber);
   // The flat punch's compliance sets the floor of every law's compliance (cell_contact_law.hpp).
   const double punch = cell_punch_compliance(grid, pixels, rubber);
-  auto laws = std::make_shared<CellContactLaws>(grid.positions * grid.lines.size(), cap, 1e-3 * punch);
+  const std::size_t cells = grid.positions * grid.lines.size();
+  std::filesystem::path entry;
+  if (cache && cache->from_cache) *cache->from_cache = false;
+  if (cache && cache->folder) {
+    entry = *cache->folder / contact_law_cache_name(texture_law_digest(road, grid, pixels, rubber));
+    std::string warning;
+    if (auto stored = read_contact_law_cache(entry, cells, cap, 1e-3 * punch, warning)) {
+      if (cache->from_cache) *cache->from_cache = true;
+      return stored;
+    }
+    if (!warning.empty() && cache->warnings) cache->warnings->push_back(warning);
+  }
+  auto laws = std::make_shared<CellContactLaws>(cells, cap, 1e-3 * punch);
   for_each_cell_path(
       road, grid, pixels, rubber, cap, threads,
       [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
@@ -124,6 +164,15 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
         laws->set(cell, top, approaches);
       },
       progress);
+  if (!entry.empty()) {
+    // A cache that cannot be written costs the next run the computation, not this run its result.
+    try {
+      std::filesystem::create_directories(entry.parent_path());
+      write_contact_law_cache(entry, *laws);
+    } catch (const std::exception& e) {
+      if (cache->warnings) cache->warnings->push_back(std::string("the contact laws could not be cached: ") + e.what());
+    }
+  }
   return laws;
 }
 

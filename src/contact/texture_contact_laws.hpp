@@ -4,6 +4,8 @@
 // on each lateral line y_j, each solved exactly on a pixel grid of the road's own sample spacing
 // (halfspace_load_path.hpp). Cell index: m·lines + j.
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -64,10 +66,29 @@ void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, Ce
 // The compliance of a flat punch of the cell's size on those pixels, 1/(1ᵀK⁻¹1), m/N.
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber);
 
-// Every cell's law, on `threads` threads (positions in blocks, the road read in order along x).
-// The same road, grid and rubber give the same laws for any thread count.
+// The pixel heights of cells first … first + count − 1 (all lines) into `heights`
+// (cell-major: ((m·lines + j)·nx + a)·ny + b).
+void fill_block_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels, std::size_t first,
+                        std::size_t count, std::vector<double>& heights);
+// A digest of everything the laws are made from: every cell's pixel heights, the layout, the
+// rubber and the table's form (contact_law_cache.hpp).
+std::uint64_t texture_law_digest(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+                                 const TreadRubber& rubber);
+
+// Where the laws are kept between runs: the cache folder (none: not kept), and what the caller
+// is told (whether they came from it; warnings about an entry that could not be used or written).
+struct TextureLawCache {
+  std::optional<std::filesystem::path> folder;
+  bool* from_cache = nullptr;
+  std::vector<std::string>* warnings = nullptr;
+};
+
+// Every cell's law, on `threads` threads (positions in blocks, the road read in order along x),
+// or read from `cache`. The same road, grid and rubber give the same laws for any thread count,
+// computed or cached.
 std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
                                                            CellPixels pixels, const TreadRubber& rubber, int threads,
-                                                           ProgressReporter* progress = nullptr);
+                                                           ProgressReporter* progress = nullptr,
+                                                           const TextureLawCache* cache = nullptr);
 
 }  // namespace rollnoise

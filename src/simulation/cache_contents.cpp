@@ -21,6 +21,7 @@ std::string kind_of(const fs::path& file) {
   if (name.starts_with(kRadiationCachePrefix) && file.extension() == ".h5") return "radiation";
   if (name.starts_with("two_layer-") && file.extension() == ".h5") return "two_layer table";
   if (file.extension() == ".fits") return "mode fits";
+  if (name.starts_with("contact-laws-") && file.extension() == ".h5") return "contact laws";
   return {};
 }
 
@@ -45,6 +46,8 @@ std::vector<CacheEntry> cache_entries(const fs::path& folder) {
       e.holds = "modal receptance table of a two_layer tyre (greens/modal_table_cache.hpp)";
     else if (e.kind == "mode fits")
       e.holds = "pole-residue fits of a tyre's modes (greens/fitted_modes_cache.hpp)";
+    else if (e.kind == "contact laws")
+      e.holds = "the per-cell texture contact laws of a road under a tyre's grid (contact/contact_law_cache.hpp)";
     else
       e.holds = "a write that did not finish (a run stopped while storing); safe to remove";
     out.push_back(std::move(e));

@@ -284,6 +284,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     (void)cell_pixels(grid.dx(), grid.dy(), road->sample_spacing(), road_table.source_of("sample_spacing"),
                       "[road] sample_spacing");
     run.law_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    run.law_cache = options.cache;
   }
   run.keep_fields = false;  // streamed through the step outputs below
   std::unique_ptr<NonlinearTread> springs;
@@ -417,7 +418,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                       {"tread_poisson_ratio", model.tread_poisson_ratio},
                                       {"force_cap_N", trace.law_force_cap},
                                       {"largest_cell_force_N", trace.largest_cell_force},
-                                      {"seconds", trace.law_seconds}};
+                                      {"seconds", trace.law_seconds},
+                                      {"from_cache", trace.laws_from_cache}};
   }
   summary["grid"] = {{"points_circumferential", grid.circumferential},
                      {"points_lateral", grid.lateral},

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "contact/cell_contact_law.hpp"
@@ -119,6 +120,57 @@ TEST(TextureContactLaws, StaticTreadBlockOnMeasuredTextureMeetsTheTable) {
   // linear law with tens of kinks: a few per cent at most.
   EXPECT_LT(worst, 0.03);
   std::printf("static block on the measured fine asphalt: the table's force within %.2f %%\n", 100.0 * worst);
+}
+
+TEST(TextureContactLaws, CachedLawsAreTheComputedOnesAndADamagedEntryIsRecomputed) {
+  const auto road = captif_fine(0.05);
+  ContactCellGrid grid;
+  grid.dx = 2e-3;
+  grid.dy = 7e-3;
+  grid.x0 = 0.01;
+  grid.step = 1e-3;
+  grid.positions = 5;
+  grid.lines = {-0.01, 0.0, 0.012};
+  const CellPixels pixels = cell_pixels(grid.dx, grid.dy, road->sample_spacing(), "", "");
+  const fs::path folder = fs::temp_directory_path() / ("rollnoise_law_cache_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  bool from_cache = true;
+  std::vector<std::string> warnings;
+  const TextureLawCache cache{folder, &from_cache, &warnings};
+  const auto entries = [&] { return std::distance(fs::directory_iterator(folder), fs::directory_iterator{}); };
+  const auto cold = make_texture_contact_laws(*road, grid, pixels, TreadRubber{4e6, 0.48}, 2, nullptr, &cache);
+  EXPECT_FALSE(from_cache);
+  ASSERT_EQ(entries(), 1);
+  const auto same = [&](const CellContactLaws& a, const CellContactLaws& b) {
+    for (std::size_t c = 0; c < a.cells(); ++c) {
+      EXPECT_EQ(a.top(c), b.top(c));
+      for (int k = 0; k < CellContactLaws::levels; ++k)
+        EXPECT_EQ(a.approaches(c)[static_cast<std::size_t>(k)], b.approaches(c)[static_cast<std::size_t>(k)]);
+      double fa = 0.0, sa = 0.0, fb = 0.0, sb = 0.0;
+      a.force(c, 3e-5, fa, sa);
+      b.force(c, 3e-5, fb, sb);
+      EXPECT_EQ(fa, fb);
+      EXPECT_EQ(sa, sb);
+      EXPECT_EQ(a.stored_energy(c, 3e-5), b.stored_energy(c, 3e-5));
+    }
+  };
+  const auto warm = make_texture_contact_laws(*road, grid, pixels, TreadRubber{4e6, 0.48}, 1, nullptr, &cache);
+  EXPECT_TRUE(from_cache);
+  EXPECT_TRUE(warnings.empty());
+  same(*cold, *warm);
+  // A damaged entry: computed again, said once, and stored whole again.
+  const fs::path entry = fs::directory_iterator(folder)->path();
+  std::ofstream(entry, std::ios::binary | std::ios::trunc) << "not an HDF5 file";
+  const auto again = make_texture_contact_laws(*road, grid, pixels, TreadRubber{4e6, 0.48}, 2, nullptr, &cache);
+  EXPECT_FALSE(from_cache);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("could not be used"), std::string::npos) << warnings[0];
+  same(*cold, *again);
+  // Another rubber is another entry.
+  (void)make_texture_contact_laws(*road, grid, pixels, TreadRubber{5e6, 0.48}, 2, nullptr, &cache);
+  EXPECT_FALSE(from_cache);
+  EXPECT_EQ(entries(), 2);
+  fs::remove_all(folder);
 }
 
 TEST(TextureContactLaws, TooCoarseARoadIsRefusedWithTheSpacingNeeded) {
