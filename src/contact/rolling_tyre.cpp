@@ -487,6 +487,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     else
       cancel.throw_if_cancelled();
   }
+  if (texture_law && trace.largest_cell_force > laws->force_cap())
+    trace.warnings.push_back("a cell carried " + std::to_string(trace.largest_cell_force) +
+                             " N, beyond the contact laws' table (" + std::to_string(laws->force_cap()) +
+                             " N, a pressure of E* over the cell), where each law is extrapolated linearly");
   trace.step_loop_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_started).count() - trace.sink_seconds;
   if (lcp) {

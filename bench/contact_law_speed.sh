@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Speed of the texture contact law ([rolling] contact_law = "texture"): 1 s of rolling of CASE
+# (default plate_rough_80kmh: 22 m of dac11 under 20 lateral lines) with the rigid cells and with
+# the laws, side by side in one run of this script: the laws computed from an empty cache, then
+# read from it, and the step loop per step of each. Radiation off. Timed CLI runs; the figures
+# come from each run's summary.json.
+#   bash bench/contact_law_speed.sh [CASE [DURATION_S]]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh >/dev/null
+cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
+cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
+exe=build-bench/tools/rollnoise/rollnoise
+case=${1:-models/cases/plate_rough_80kmh.toml}
+duration=${2:-1.0}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+export ROLLNOISE_CACHE="$out/cache"  # empty: the first texture run computes the laws
+run() {  # name law
+  CI=true "$exe" simulate "$case" --out "$out/$1" --set rolling.duration="$duration" --set radiation.enabled=false \
+    --set output.plots=false --set "rolling.contact_law=\"$2\"" >/dev/null
+}
+field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d$2)" "$out/$1/summary.json"; }
+run rigid rigid
+run texture_cold texture
+run texture_warm texture
+steps=$(field rigid "['settings']['steps']")
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "$(basename "$case" .toml), ${duration} s: $steps steps, $(field texture_cold "['texture_contact_law']['cells']") cells of $(field texture_cold "['texture_contact_law']['pixels_along']") x $(field texture_cold "['texture_contact_law']['pixels_across']") pixels"
+echo "laws: computed in $(field texture_cold "['texture_contact_law']['seconds']") s (empty cache), read in $(field texture_warm "['texture_contact_law']['seconds']") s (from cache: $(field texture_warm "['texture_contact_law']['from_cache']"))"
+rigid_loop=$(field rigid "['step_loop_time_s']")
+law_loop=$(field texture_warm "['step_loop_time_s']")
+echo "step loop: rigid cells ${rigid_loop} s, texture laws ${law_loop} s: $(python3 -c "print(round($law_loop/$rigid_loop, 2))")x; per step $(python3 -c "print(round(1e3*$rigid_loop/$steps, 3))") ms and $(python3 -c "print(round(1e3*$law_loop/$steps, 3))") ms"
+echo "contact stage: rigid $(field rigid "['contact_time_s']") s, texture cold $(field texture_cold "['contact_time_s']") s, warm $(field texture_warm "['contact_time_s']") s"
