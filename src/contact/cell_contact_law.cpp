@@ -109,7 +109,10 @@ double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, doub
   const double d0 = node_delta(cell, i), h = node_delta(cell, i + 1) - d0;
   const double f0 = node_force(i), f1 = node_force(i + 1);
   const double hm0 = h * node_slope(cell, i), hm1 = h * node_slope(cell, i + 1);
-  double lo = 0.0, hi = 1.0, t = 0.5;
+  // Start where the chord between the segment's ends meets the target (g is increasing and
+  // nearly linear on a segment): Newton then takes two or three steps.
+  const double g0 = w * d0 + c * f0 - target, g1 = w * (d0 + h) + c * f1 - target;
+  double lo = 0.0, hi = 1.0, t = g1 > g0 ? std::clamp(-g0 / (g1 - g0), 0.0, 1.0) : 0.5;
   // δ = d0 + h·t is known to its round-off, eps·δ: in t, eps·(d0 + h)/h, which is far above eps
   // on a short segment far from the origin (stopping at eps in t would bisect to the end).
   const double resolution = 4.0 * kEps * (d0 + h) / h;
@@ -118,6 +121,8 @@ double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, doub
     const double f = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * hm0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * hm1;
     const double df = (6 * t2 - 6 * t) * (f0 - f1) + (3 * t2 - 4 * t + 1) * hm0 + (3 * t2 - 2 * t) * hm1;  // dF/dt
     const double g = w * (d0 + h * t) + c * f - target;
+    // g is known to the round-off of its terms: closer is noise (with c·F ≫ δ far above eps·δ).
+    if (std::abs(g) <= 4.0 * kEps * (w * (d0 + h * t) + c * std::abs(f) + std::abs(target))) return d0 + h * t;
     if (g > 0.0) hi = t;
     else lo = t;
     const double derivative = w * h + c * df;
