@@ -15,6 +15,7 @@
 
 #include "contact/rolling_settings.hpp"
 #include "contact/rolling_tyre.hpp"
+#include "core/cache_limit.hpp"
 #include "core/case_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -204,6 +205,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
   if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
+  if (options.cache_limit) sound.cache_limit = *options.cache_limit;
+  // A folder over its limit (a smaller limit than before, entries of the other caches, an older
+  // version's larger entries) is trimmed before the run adds to it.
+  if (options.cache) keep_cache_within(*options.cache, sound.cache_limit);
 
   TyreGrid grid;
   grid.radius = model.radius;

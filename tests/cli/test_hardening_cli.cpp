@@ -166,11 +166,11 @@ TEST(OversizedCase, TheDirectEngineOnTheDefaultGridIsRefusedNamingTheHistoryKey)
                                  "output.plots=false", "--set", "output.fields=\"none\""});
   EXPECT_EQ(fits.status, 0) << describe(fits);
   // --force skips the estimate: the run starts and makes its kernel until the address-space limit
-  // (4 GB, so that the test does not take the machine's memory) stops it, an internal error.
+  // (1.5 GB, so that the test does not take the machine's memory) stops it, an internal error.
   std::vector<std::string> forced(args);
   forced[3] = "forced";
   forced.push_back("--force");
-  const RunResult f = ws.run(forced, "ulimit -v 4000000; ");
+  const RunResult f = ws.run(forced, "ulimit -v 1500000; ");
   EXPECT_EQ(f.status, 1) << describe(f);
   EXPECT_FALSE(contains(f.err, "--force")) << "not refused: " << f.err;
   EXPECT_FALSE(fs::exists(ws.path("forced")));
