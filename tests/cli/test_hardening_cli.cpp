@@ -143,7 +143,7 @@ TEST(OversizedCase, ATyreRunThatCannotFitIsRefusedInWellUnderASecond) {
 // one 2060 × 2060 kernel matrix a step, twice (about 78 GB). Before the estimate counted the
 // engine, this case ran for 98 s and died of std::bad_alloc (or the kernel's OOM killer). Now it
 // is refused up front, naming [rolling] history first; the time it takes is measured in
-// bench/oversized_refusal.sh, not here.
+// bench/cache_footprint.sh, not here.
 TEST(OversizedCase, TheDirectEngineOnTheDefaultGridIsRefusedNamingTheHistoryKey) {
   Workspace ws;
   const std::string rough = std::string(ROLLNOISE_SOURCE_DIR) + "/models/cases/plate_rough_80kmh.toml";
