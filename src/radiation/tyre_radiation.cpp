@@ -1,8 +1,7 @@
 #include "radiation/tyre_radiation.hpp"
 
-#include "radiation/quantised_power_operator.hpp"
-
 #include "radiation/least_squares.hpp"
+#include "radiation/quantised_power_operator.hpp"
 
 #include <algorithm>
 #include <atomic>
