@@ -10,11 +10,13 @@
 #include <complex>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 #include <Eigen/SVD>
 #include <benchmark/benchmark.h>
 
 #include "radiation/equivalent_sources.hpp"
+#include "radiation/quantised_power_operator.hpp"
 #include "radiation/tyre_radiation.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 
@@ -122,6 +124,32 @@ void BM_StageAnchorSplitMesh5623Hz(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_StageAnchorSplitMesh5623Hz)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+// What the cache stores at the top anchor (radiation/quantised_power_operator.hpp): the power
+// operator's blocks as the solve gives them (the reference), and their rotation to the singular
+// basis and rounding to 16 bits, which every cold anchor now adds. Counters: the numbers kept.
+void BM_PowerOperatorSplitMesh5623Hz(benchmark::State& state) {
+  const TyreProblem p(split_spec(), Symmetry::automatic, LeastSquaresMethod::automatic);
+  const double omega = 2 * std::numbers::pi * 5623.4;
+  const EquivalentSourceSolve solve = p.model.solve(omega);
+  std::vector<Eigen::MatrixXcd> blocks;
+  for (auto _ : state) blocks = p.model.power_operator(solve, omega, p.mesh.tread_points);
+  double values = 0.0;
+  for (const Eigen::MatrixXcd& b : blocks) values += static_cast<double>(b.size());
+  state.counters["complex_values"] = values;
+}
+BENCHMARK(BM_PowerOperatorSplitMesh5623Hz)->Unit(benchmark::kMillisecond)->Iterations(2);
+void BM_QuantisePowerOperatorSplitMesh5623Hz(benchmark::State& state) {
+  const TyreProblem p(split_spec(), Symmetry::automatic, LeastSquaresMethod::automatic);
+  const double omega = 2 * std::numbers::pi * 5623.4;
+  const std::vector<Eigen::MatrixXcd> blocks = p.model.power_operator(p.model.solve(omega), omega, p.mesh.tread_points);
+  QuantisedPower q;
+  for (auto _ : state) q = quantise_power_operator(blocks);
+  double values = 0.0;
+  for (const Eigen::MatrixXcd& b : q.blocks) values += static_cast<double>(b.size());
+  state.counters["complex_values"] = values;
+}
+BENCHMARK(BM_QuantisePowerOperatorSplitMesh5623Hz)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // The first version's reference on the uniform mesh (96 × 8, monopoles): P·V⁺ from the thin SVD.
 void BM_AnchorSolveSvdReference(benchmark::State& state) {

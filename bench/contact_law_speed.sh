@@ -32,3 +32,20 @@ rigid_loop=$(field rigid "['step_loop_time_s']")
 law_loop=$(field texture_warm "['step_loop_time_s']")
 echo "step loop: rigid cells ${rigid_loop} s, texture laws ${law_loop} s: $(python3 -c "print(round($law_loop/$rigid_loop, 2))")x; per step $(python3 -c "print(round(1e3*$rigid_loop/$steps, 3))") ms and $(python3 -c "print(round(1e3*$law_loop/$steps, 3))") ms"
 echo "contact stage: rigid $(field rigid "['contact_time_s']") s, texture cold $(field texture_cold "['contact_time_s']") s, warm $(field texture_warm "['contact_time_s']") s"
+# Instruction counts of the contact step alone (load-independent), under callgrind when it is
+# installed: the rigid cells' LCP (PMatrixLcpSolver::solve) against the laws' Newton step
+# (TreadNewtonContact::solve), each as the difference of a 0.015 s and a 0.005 s run, which
+# leaves out the steady state's solves.
+if command -v valgrind >/dev/null; then
+  count() {  # law duration function -> instructions inside function
+    CI=true valgrind --tool=callgrind --callgrind-out-file="$out/cg.$1.$2" --toggle-collect="$3" "$exe" simulate "$case" \
+      --out "$out/cg_$1_$2" --set rolling.duration="$2" --set radiation.enabled=false --set output.plots=false \
+      --set "rolling.contact_law=\"$1\"" >/dev/null 2>&1
+    callgrind_annotate "$out/cg.$1.$2" 2>/dev/null | awk '/PROGRAM TOTALS/ { gsub(/,/, "", $1); print $1; exit }'
+  }
+  steps_of() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['settings']['steps'])" "$out/cg_$1_$2/summary.json"; }
+  rigid_a=$(count rigid 0.005 'rollnoise::PMatrixLcpSolver::solve*'); rigid_b=$(count rigid 0.015 'rollnoise::PMatrixLcpSolver::solve*')
+  law_a=$(count texture 0.005 'rollnoise::TreadNewtonContact::solve*'); law_b=$(count texture 0.015 'rollnoise::TreadNewtonContact::solve*')
+  d=$(( $(steps_of rigid 0.015) - $(steps_of rigid 0.005) ))
+  echo "contact step, instructions per step (callgrind): rigid $(( (rigid_b - rigid_a) / d )), texture laws $(( (law_b - law_a) / d )): $(python3 -c "print(round(($law_b - $law_a)/($rigid_b - $rigid_a), 2))")x"
+fi

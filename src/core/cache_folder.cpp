@@ -53,6 +53,17 @@ bool is_temporary_cache_file(const std::string& file_name) {
   return file_name.size() > 1 && file_name.front() == '.' && file_name.find(".tmp") != std::string::npos;
 }
 
+std::string cache_entry_kind(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (is_temporary_cache_file(name)) return "unfinished write";
+  if (!is_cache_key(file.stem().string())) return {};
+  if (name.starts_with("radiation-") && file.extension() == ".h5") return "radiation";
+  if (name.starts_with("two_layer-") && file.extension() == ".h5") return "two_layer table";
+  if (file.extension() == ".fits") return "mode fits";
+  if (name.starts_with("contact-laws-") && file.extension() == ".h5") return "contact laws";
+  return {};
+}
+
 std::string cache_folder_problem(const fs::path& directory) {
   std::error_code ec;
   fs::create_directories(directory, ec);

@@ -55,4 +55,12 @@ class TemporaryFile {
 // Whether a file name in the cache folder is a temporary file of TemporaryFile.
 bool is_temporary_cache_file(const std::string& file_name);
 
+// What a file in the cache folder is, by its name as the caches name their entries: "radiation"
+// (radiation-KEY.h5, radiation/radiation_cache.hpp), "two_layer table" (two_layer-KEY.h5,
+// greens/modal_table_cache.hpp), "mode fits" (KEY.fits, greens/fitted_modes_cache.hpp),
+// "contact laws" (contact-laws-KEY.h5, contact/contact_law_cache.hpp),
+// "unfinished write" (a TemporaryFile); empty for any other file, which no cache of rollnoise
+// reads, counts, evicts or clears (a --cache pointed at a folder of one's own loses nothing else).
+std::string cache_entry_kind(const std::filesystem::path& file);
+
 }  // namespace rollnoise

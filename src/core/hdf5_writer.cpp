@@ -128,6 +128,50 @@ void Hdf5Writer::write(const std::string& path, const Eigen::MatrixXd& data, con
   describe(dataset.get(), units, description);
 }
 
+namespace {
+
+// A dataset [rows][cols] of `file_type` from C-order `values` of `memory_type`, in chunks of
+// about 64 kB of whole rows, shuffled and deflated.
+void write_deflated(hid_t file, const std::string& path, hid_t file_type, hid_t memory_type, std::size_t value_size,
+                    hsize_t rows, hsize_t cols, const void* values, int deflate_level, const std::string& units,
+                    const std::string& description) {
+  const hsize_t dims[2] = {rows, cols};
+  Handle space(checked(H5Screate_simple(2, dims, nullptr), "space"), H5Sclose);
+  Handle properties(checked(H5Pcreate(H5P_DATASET_CREATE), "properties"), H5Pclose);
+  if (rows > 0 && cols > 0) {
+    const hsize_t row_bytes = cols * value_size;
+    const hsize_t chunk[2] = {std::clamp<hsize_t>((hsize_t{1} << 16) / row_bytes, 1, rows), cols};
+    check(H5Pset_chunk(properties.get(), 2, chunk), "chunking");
+    if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) <= 0) throw std::runtime_error("HDF5: this libhdf5 has no deflate filter");
+    check(H5Pset_shuffle(properties.get()), "shuffle filter");
+    check(H5Pset_deflate(properties.get(), static_cast<unsigned>(std::clamp(deflate_level, 1, 9))), "deflate filter");
+  }
+  const Handle links = link_creation_with_parents();
+  Handle dataset(checked(H5Dcreate2(file, path.c_str(), file_type, space.get(), links.get(), properties.get(),
+                                    H5P_DEFAULT),
+                         "dataset " + path),
+                 H5Dclose);
+  if (rows > 0 && cols > 0)
+    check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values), "write " + path);
+  describe(dataset.get(), units, description);
+}
+
+}  // namespace
+
+void Hdf5Writer::write_compressed(const std::string& path, const Eigen::MatrixXd& data, int deflate_level,
+                                  const std::string& units, const std::string& description) {
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
+  write_deflated(file_, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sizeof(double), static_cast<hsize_t>(data.rows()),
+                 static_cast<hsize_t>(data.cols()), row_major.data(), deflate_level, units, description);
+}
+
+void Hdf5Writer::write_compressed(const std::string& path,
+                                  const Eigen::Matrix<std::int16_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& data,
+                                  int deflate_level, const std::string& units, const std::string& description) {
+  write_deflated(file_, path, H5T_STD_I16LE, H5T_NATIVE_INT16, sizeof(std::int16_t), static_cast<hsize_t>(data.rows()),
+                 static_cast<hsize_t>(data.cols()), data.data(), deflate_level, units, description);
+}
+
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, double value) {
   Handle target(checked(H5Oopen(file_, object.c_str(), H5P_DEFAULT), "open " + object), H5Oclose);
   write_double_attribute(target.get(), name, &value, 1);

@@ -45,6 +45,14 @@ class Hdf5Writer {
   // 2-D dataset [rows][cols] of doubles from a matrix (any storage order).
   void write(const std::string& path, const Eigen::MatrixXd& data, const std::string& units,
              const std::string& description);
+  // 2-D datasets [rows][cols] stored in chunks of whole rows through HDF5's shuffle and deflate
+  // filters at `deflate_level` (1–9): doubles, or 16-bit integers (quantised values). h5py,
+  // MATLAB and the HDF5 tools read them as any other dataset. An empty matrix is stored plain.
+  void write_compressed(const std::string& path, const Eigen::MatrixXd& data, int deflate_level,
+                        const std::string& units, const std::string& description);
+  void write_compressed(const std::string& path,
+                        const Eigen::Matrix<std::int16_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& data,
+                        int deflate_level, const std::string& units, const std::string& description);
   // Attributes on a group or dataset ("/" for the file).
   void attribute(const std::string& object, const std::string& name, double value);
   void attribute(const std::string& object, const std::string& name, const std::string& value);

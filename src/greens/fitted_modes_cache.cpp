@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/cache_limit.hpp"
 #include "core/cache_folder.hpp"
 #include "core/fnv_digest.hpp"
 
@@ -109,6 +110,7 @@ std::optional<std::vector<PoleResidueResponse>> load_cached_fits(const fs::path&
     }
   }
   if (c.position() != body) return std::nullopt;
+  mark_cache_entry_used(file);  // recency for the folder's limit (core/cache_limit.hpp)
   return fits;
 }
 

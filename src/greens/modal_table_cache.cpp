@@ -9,6 +9,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/cache_limit.hpp"
 #include "core/cache_folder.hpp"
 #include "core/fnv_digest.hpp"
 #include "greens/modal_table_hdf5.hpp"
@@ -113,7 +114,9 @@ std::optional<ModalReceptanceTable> load_cached_table(const fs::path& directory,
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
   try {
-    return read_modal_table(file);
+    ModalReceptanceTable table = read_modal_table(file);
+    mark_cache_entry_used(file);  // recency for the folder's limit (core/cache_limit.hpp)
+    return table;
   } catch (const std::exception&) {
     // Corrupt, truncated or from another layout: a miss; the caller recomputes and overwrites.
     return std::nullopt;

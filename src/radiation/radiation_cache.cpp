@@ -1,5 +1,8 @@
 #include "radiation/radiation_cache.hpp"
 
+#include <sys/stat.h>
+
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -14,6 +17,8 @@
 #include "core/hdf5_reader.hpp"
 #include "core/hdf5_writer.hpp"
 #include "core/mapped_file.hpp"
+#include "core/run_estimate.hpp"
+#include "radiation/quantised_power_operator.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -25,6 +30,10 @@ constexpr std::size_t kMaxPowerRows = std::size_t{1} << 16;
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// Deflate's level for the datasets: on one radiating body's power blocks, level 4 gave 36.7 MB in
+// 1.7 s of compression, 9 gave 35.4 MB in 49 s and 1 gave 39.1 MB in 1.2 s (zlib, 2 cores).
+constexpr int kDeflateLevel = 4;
+
 void digest_matrix(FnvDigest& d, const Eigen::MatrixXcd& m) {
   d.integer(m.rows());
   d.integer(m.cols());
@@ -32,18 +41,40 @@ void digest_matrix(FnvDigest& d, const Eigen::MatrixXcd& m) {
   d.words(reinterpret_cast<const char*>(m.data()), sizeof(std::complex<double>) * static_cast<std::size_t>(m.size()));
 }
 
-// One complex matrix from its two datasets, C order [rows][cols]; `rows` 0: any up to the bound.
+// One complex matrix of doubles from its two datasets, C order [rows][cols].
 Eigen::MatrixXcd read_complex(const Hdf5Reader& file, const std::string& name, std::size_t rows, std::size_t columns) {
-  const std::size_t max_rows = rows ? rows : kMaxPowerRows;
-  const Hdf5Array re = file.read_numbers("/" + name + "_re", 2, max_rows * columns);
-  const Hdf5Array im = file.read_numbers("/" + name + "_im", 2, max_rows * columns);
-  if (re.dims.size() != 2 || re.dims != im.dims || re.dims[1] != columns || (rows && re.dims[0] != rows))
+  const Hdf5Array re = file.read_numbers("/" + name + "_re", 2, rows * columns);
+  const Hdf5Array im = file.read_numbers("/" + name + "_im", 2, rows * columns);
+  if (re.dims.size() != 2 || re.dims != im.dims || re.dims[0] != rows || re.dims[1] != columns)
     throw InputError(file.source(), "/" + name, "has dimensions other than the entry's key asks for");
-  const auto r = static_cast<Eigen::Index>(re.dims[0]);
-  const auto c = static_cast<Eigen::Index>(re.dims[1]);
+  const auto r = static_cast<Eigen::Index>(rows);
+  const auto c = static_cast<Eigen::Index>(columns);
   Eigen::MatrixXcd out(r, c);
   out.real() = Eigen::Map<const RowMajor>(re.values.data(), r, c);
   out.imag() = Eigen::Map<const RowMajor>(im.values.data(), r, c);
+  return out;
+}
+
+// A quantised block from its two datasets of integers (quantised_power_operator.hpp): the same
+// doubles the stage applied when it solved the anchor (integer × quantum).
+Eigen::MatrixXcd read_quantised(const Hdf5Reader& file, const std::string& name, std::size_t rows, std::size_t columns,
+                                double quantum) {
+  const auto part = [&](const std::string& suffix) {
+    const Hdf5Array a = file.read_numbers("/" + name + suffix, 2, rows * columns);
+    if (a.dims.size() != 2 || a.dims[0] != rows || a.dims[1] != columns)
+      throw InputError(file.source(), "/" + name + suffix, "has dimensions other than the entry says");
+    Int16Matrix integers(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(columns));
+    for (std::size_t i = 0; i < a.values.size(); ++i) {
+      const double v = a.values[i];
+      if (!(std::abs(v) <= 32767.0) || v != std::nearbyint(v))
+        throw InputError(file.source(), "/" + name + suffix, "holds a value that is not a 16-bit integer");
+      integers.data()[i] = static_cast<std::int16_t>(v);
+    }
+    return values_of(integers, quantum);
+  };
+  Eigen::MatrixXcd out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(columns));
+  out.real() = part("_re");
+  out.imag() = part("_im");
   return out;
 }
 
@@ -61,10 +92,22 @@ AnchorOperators read_entry(const fs::path& path, const std::string& key, Eigen::
   const std::optional<double> blocks = file.number_attribute("/", "power_blocks");
   if (!blocks || *blocks != static_cast<double>(power_columns.size()))
     throw InputError(path.string(), "/ attribute power_blocks", "is not the number of the mesh's symmetry blocks");
-  for (std::size_t c = 0; c < power_columns.size(); ++c)
-    out.power.push_back(read_complex(file, "power_" + std::to_string(c), 0, static_cast<std::size_t>(power_columns[c])));
+  const std::optional<double> quantum = file.number_attribute("/", "power_quantum");
+  if (!quantum || !(*quantum >= 0.0) || !std::isfinite(*quantum))
+    throw InputError(path.string(), "/ attribute power_quantum", "is missing, negative or not finite");
+  out.power_quantum = *quantum;
+  for (std::size_t c = 0; c < power_columns.size(); ++c) {
+    const std::string name = "power_" + std::to_string(c);
+    const std::optional<double> rows = file.number_attribute("/", name + "_rows");
+    if (!rows || !(*rows >= 0.0) || *rows > static_cast<double>(kMaxPowerRows) || *rows != std::floor(*rows) ||
+        (*rows > 0.0 && !(*quantum > 0.0)))
+      throw InputError(path.string(), "/ attribute " + name + "_rows", "is missing or out of range");
+    const auto k = static_cast<std::size_t>(*rows);
+    const auto t = static_cast<std::size_t>(power_columns[c]);
+    out.power.push_back(k == 0 ? Eigen::MatrixXcd(0, power_columns[c]) : read_quantised(file, name, k, t, *quantum));
+  }
   // The checksum attribute of the values is not computed again: the trailer's, checked before,
-  // covers every byte of the file, the values' among them (a second pass over 520 MB a warm run).
+  // covers every byte of the file, the values' among them.
   return out;
 }
 
@@ -82,8 +125,9 @@ std::uint64_t file_checksum(std::string_view bytes) {
   return d.value();
 }
 
-// The file mapped, not read into a buffer: an entry is up to 26 MB and a warm run checks 520 MB
-// of them; the copy (and the buffer's first touch) cost more than the checksum (issue 12). The
+// The file mapped, not read into a buffer: a warm run checked 520 MB of entries before they were
+// rounded (45 MB since), and the copy (and the buffer's first touch) cost more than the checksum
+// (issue 12). The
 // entries are replaced by rename, never rewritten in place, so the mapped bytes stay those checked.
 void check_file_trailer(const fs::path& path) {
   const MappedFile file(path);
@@ -111,6 +155,15 @@ void append_file_trailer(const fs::path& path) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// A file as the file system knows it (device and inode): a rename onto the path or a removal
+// changes it, a write in place does not.
+using FileIdentity = std::pair<std::uint64_t, std::uint64_t>;
+std::optional<FileIdentity> identity_of(const fs::path& path) {
+  struct stat s {};
+  if (::stat(path.c_str(), &s) != 0) return std::nullopt;
+  return FileIdentity{static_cast<std::uint64_t>(s.st_dev), static_cast<std::uint64_t>(s.st_ino)};
+}
+
 }  // namespace
 
 std::string radiation_entry_checksum(const std::string& key, const AnchorOperators& operators) {
@@ -120,10 +173,11 @@ std::string radiation_entry_checksum(const std::string& key, const AnchorOperato
   digest_matrix(d, operators.transfer);
   d.integer(static_cast<std::int64_t>(operators.power.size()));
   for (const Eigen::MatrixXcd& block : operators.power) digest_matrix(d, block);
+  d.real(operators.power_quantum);
   return d.hex();
 }
 
-RadiationCache::RadiationCache(fs::path folder) : folder_(std::move(folder)) {}
+RadiationCache::RadiationCache(fs::path folder, std::uint64_t limit) : folder_(std::move(folder)), limit_(limit) {}
 
 fs::path RadiationCache::file_of(const std::string& key) const {
   if (!is_cache_key(key)) throw std::invalid_argument("radiation cache: the key \"" + key + "\" is not a plain file name");
@@ -139,13 +193,18 @@ Eigen::Index AnchorOperators::power_rank() const {
 std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eigen::Index receivers, Eigen::Index columns,
                                                     const std::vector<Eigen::Index>& power_columns) const {
   const fs::path path = file_of(key);
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return std::nullopt;
+  const std::optional<FileIdentity> before = identity_of(path);
+  if (!before) return std::nullopt;
   try {
     check_file_trailer(path);
     // The bytes are those this code wrote: the HDF5 library reads them in this process.
-    return read_entry(path, key, receivers, columns, power_columns);
+    AnchorOperators operators = read_entry(path, key, receivers, columns, power_columns);
+    mark_cache_entry_used(path);
+    return operators;
   } catch (const std::exception& error) {
+    // Removed by another run's trim, or replaced by another run's store, while this one read it:
+    // a miss, not damage.
+    if (identity_of(path) != before) return std::nullopt;
     // Each entry is loaded once per run, so this is the one warning for it.
     std::fprintf(stderr, "rollnoise: warning: the radiation cache entry %s is damaged or foreign (%s): solving it again\n",
                  path.string().c_str(), error.what());
@@ -205,24 +264,40 @@ void RadiationCache::store(const std::string& key, const AnchorOperators& operat
       h5.integer_attribute("/", "receivers", operators.transfer.rows());
       h5.integer_attribute("/", "power_rank", operators.power_rank());
       h5.integer_attribute("/", "power_blocks", static_cast<std::int64_t>(operators.power.size()));
+      h5.attribute("/", "power_quantum", operators.power_quantum);
       h5.attribute("/", "source_type", description.source_type);
       const std::string columns = "; column: collocation point of the level mesh (the tread first)";
-      h5.write("/transfer_re", Eigen::MatrixXd(operators.transfer.real()), "Pa/(m/s)",
-               "real part of the transfer from normal velocity to receiver pressure; row: receiver" + columns);
-      h5.write("/transfer_im", Eigen::MatrixXd(operators.transfer.imag()), "Pa/(m/s)",
-               "imaginary part of the transfer to the receivers" + columns);
+      h5.write_compressed("/transfer_re", Eigen::MatrixXd(operators.transfer.real()), kDeflateLevel, "Pa/(m/s)",
+                          "real part of the transfer from normal velocity to receiver pressure; row: receiver" + columns);
+      h5.write_compressed("/transfer_im", Eigen::MatrixXd(operators.transfer.imag()), kDeflateLevel, "Pa/(m/s)",
+                          "imaginary part of the transfer to the receivers" + columns);
       for (std::size_t c = 0; c < operators.power.size(); ++c) {
-        const std::string name = "/power_" + std::to_string(c);
-        const std::string what = "part of the power operator's block Q_" + std::to_string(c) +
-                                 " (W = 0.5*sum_c |Q_c x_c|^2, x_c the velocities' coordinates in the mesh's symmetry "
-                                 "character c); row: power pattern, column: coordinate";
-        h5.write(name + "_re", Eigen::MatrixXd(operators.power[c].real()), "sqrt(W)/(m/s)", "real " + what);
-        h5.write(name + "_im", Eigen::MatrixXd(operators.power[c].imag()), "sqrt(W)/(m/s)", "imaginary " + what);
+        const std::string name = "power_" + std::to_string(c);
+        const Eigen::MatrixXcd& block = operators.power[c];
+        h5.integer_attribute("/", name + "_rows", block.rows());
+        if (block.rows() == 0) continue;
+        const std::string what = "part of the power operator's block B_" + std::to_string(c) +
+                                 " in units of power_quantum (W = 0.5*sum_c |B_c x_c|^2, x_c the velocities' "
+                                 "coordinates in the mesh's symmetry character c); row: radiating pattern, strongest "
+                                 "first; column: coordinate";
+        h5.write_compressed("/" + name + "_re", integers_of(block.real(), operators.power_quantum), kDeflateLevel,
+                            "power_quantum", "real " + what);
+        h5.write_compressed("/" + name + "_im", integers_of(block.imag(), operators.power_quantum), kDeflateLevel,
+                            "power_quantum", "imaginary " + what);
       }
       h5.close();
     }
     append_file_trailer(temporary.path());
+    // An entry that alone exceeds the limit would only be trimmed again: not stored.
+    if (const std::uint64_t bytes = fs::file_size(temporary.path()); bytes > limit_) {
+      if (!oversize_warned_.exchange(true))
+        std::fprintf(stderr,
+                     "rollnoise: warning: a radiation cache entry (%s) is larger than the cache's limit (%s): not stored\n",
+                     format_bytes(bytes).c_str(), format_bytes(limit_).c_str());
+      return;
+    }
     temporary.rename_to(path);
+    keep_cache_within(folder_, limit_);
   } catch (const std::exception& error) {
     if (!store_failed_.exchange(true))
       std::fprintf(stderr, "rollnoise: warning: cannot store in the radiation cache %s (%s): going on without storing\n",

@@ -1,6 +1,7 @@
 #include "radiation/tyre_radiation.hpp"
 
 #include "radiation/least_squares.hpp"
+#include "radiation/quantised_power_operator.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -43,7 +44,7 @@ constexpr double kCouplingFloor = 50.0;
 
 // Raise when a change of the stage's solve changes the operators it stores: old cache entries
 // then miss (radiation_cache.hpp). The key digests the inputs; this marks the code.
-constexpr int kAnchorSolveRevision = 1;
+constexpr int kAnchorSolveRevision = 2;
 
 // What one anchor gives: the transfer to the receivers, and its hat-weighted share of the power
 // of the bins around it.
@@ -232,7 +233,11 @@ AnchorOperators TyreRadiation::solve_anchor(std::size_t level_index, double anch
   const EquivalentSourceSolve solve = model.solve(omega, settings_.regularisation);
   AnchorOperators out;
   out.transfer = solve.transfer(model.pressure_matrix(omega, receivers_)).leftCols(columns);
-  out.power = model.power_operator(solve, omega, columns);
+  // At the precision the power needs (quantised_power_operator.hpp), whether it is then stored
+  // or not: a run from the cache applies the same numbers.
+  QuantisedPower power = quantise_power_operator(model.power_operator(solve, omega, columns));
+  out.power = std::move(power.blocks);
+  out.power_quantum = power.quantum;
   return out;
 }
 

@@ -10,22 +10,6 @@
 
 namespace rollnoise {
 namespace fs = std::filesystem;
-namespace {
-
-// The kind of a file by its name, as the caches name them (radiation_cache.hpp,
-// modal_table_cache.hpp, fitted_modes_cache.hpp, core/cache_folder.hpp); empty: not ours.
-std::string kind_of(const fs::path& file) {
-  const std::string name = file.filename().string();
-  if (is_temporary_cache_file(name)) return "unfinished write";
-  if (!is_cache_key(file.stem().string())) return {};
-  if (name.starts_with(kRadiationCachePrefix) && file.extension() == ".h5") return "radiation";
-  if (name.starts_with("two_layer-") && file.extension() == ".h5") return "two_layer table";
-  if (file.extension() == ".fits") return "mode fits";
-  if (name.starts_with("contact-laws-") && file.extension() == ".h5") return "contact laws";
-  return {};
-}
-
-}  // namespace
 
 std::vector<CacheEntry> cache_entries(const fs::path& folder) {
   std::vector<CacheEntry> out;
@@ -36,7 +20,7 @@ std::vector<CacheEntry> cache_entries(const fs::path& folder) {
     if (!entry.is_regular_file(ec)) continue;
     CacheEntry e;
     e.path = entry.path();
-    e.kind = kind_of(e.path);
+    e.kind = cache_entry_kind(e.path);
     if (e.kind.empty()) continue;
     e.bytes = entry.file_size(ec);
     e.age_s = std::max(0.0, std::chrono::duration<double>(now - entry.last_write_time(ec)).count());

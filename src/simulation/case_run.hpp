@@ -3,6 +3,7 @@
 // contact → response → radiation → acoustics → audio, and write the outputs atomically into
 // one folder. What `rollnoise simulate` and `rollnoise study` call; it prints nothing but
 // warnings, so the callers decide what to say.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -32,6 +33,9 @@ struct CaseRunOptions {
   // the mode fits, the radiation's anchor operators); std::nullopt: none. The command line
   // resolves --cache and --no-cache into this (usable_cache_folder).
   std::optional<std::filesystem::path> cache = default_cache_directory();
+  // The cache folder's size limit from --cache-limit, which overrides the case's [radiation]
+  // cache_limit (core/cache_limit.hpp); none: the case's, else kDefaultCacheLimitBytes.
+  std::optional<std::uint64_t> cache_limit;
   // Told of the run's progress (the contact loop, the radiation's anchors), drawn or not; none:
   // nobody. Must outlive the run.
   ProgressSink* progress_sink = nullptr;

@@ -17,6 +17,7 @@
 #include "core/output_directory.hpp"
 #include "core/regular_file.hpp"
 #include "greens/fitted_modal_tyre.hpp"
+#include "core/cache_limit.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/modal_table_hdf5.hpp"
 #include "simulation/greens_plots.hpp"
@@ -181,6 +182,8 @@ GreensRun run_greens(const GreensRunOptions& options, const fs::path& out) {
   const ConfigTable top = file.top();
   // The same cache folder as simulate's (two-layer tables, mode fits).
   const std::optional<fs::path>& cache = options.cache;
+  // Kept within its limit before the model's tables and fits may add to it (core/cache_limit.hpp).
+  if (cache) keep_cache_within(*cache, options.cache_limit.value_or(kDefaultCacheLimitBytes));
   GreensRun run;
   run.response = make_centre_line_response(top, cache);
   const std::unique_ptr<CentreLineResponse>& response = run.response;

@@ -6,6 +6,7 @@
 // model its modal table. The result is in memory; write_greens_outputs writes receptance.csv,
 // mobility.csv, greens.h5, the modal table, summary.json and the plots into a folder, atomically.
 #include <complex>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -34,6 +35,7 @@ struct GreensRunOptions {
   std::vector<double> frequencies;    // Hz; empty: 501 from 0 Hz to the model's top frequency
   std::vector<double> distances;      // m along the circumference; empty: the model's default
   std::optional<std::filesystem::path> cache;  // the cache folder (two-layer tables, mode fits)
+  std::optional<std::uint64_t> cache_limit;    // its size limit (--cache-limit; none: the default)
   bool force = false;                 // run even when the estimate exceeds the machine
 };
 

@@ -17,6 +17,7 @@
 #include "greens/model_factory.hpp"
 #include "road/road_profile.hpp"
 #include "simulation/point_contact_output.hpp"
+#include "greens/discrete_kernel.hpp"
 #include "simulation/run_size.hpp"
 
 namespace rollnoise {
@@ -36,7 +37,9 @@ CaseResult run_point_simulation(const CaseFile& file, const fs::path& out, std::
 
   const std::unique_ptr<GreensModel> model = make_greens_model(tyre);
   const RollingSettings settings = read_rolling_settings(rolling);
-  check_run_fits(estimate_point_run(settings.steps() + 1, static_cast<std::uint64_t>(model->point_count()), file.name()),
+  // The kernel is cut where it has decayed (discrete_kernel.hpp), at most the run's length.
+  check_run_fits(estimate_point_run(settings.steps() + 1, static_cast<std::uint64_t>(model->point_count()),
+                                    decay_length(*model, settings.time_step), file.name()),
                  available_memory_bytes(), available_disk_bytes(out), options.force);
   output.text("directory", "");
   const bool plots = output.boolean("plots", true);

@@ -14,14 +14,16 @@ std::string count(std::uint64_t n) {
 
 }  // namespace
 
-RunEstimate estimate_point_run(std::uint64_t samples, std::uint64_t points, const std::string& source) {
+RunEstimate estimate_point_run(std::uint64_t samples, std::uint64_t points, std::uint64_t lags, const std::string& source) {
   RunEstimate e;
   e.source = source;
   e.keys = {"[rolling] duration", "[rolling] time_step"};
   const std::string keys = "[rolling] duration, [rolling] time_step";
   const std::uint64_t cells = checked_product({samples, points}, source, keys);
-  // Four samples × points fields of doubles (and the history the direct engine keeps, as large).
-  e.memory_bytes = checked_product({cells, 5 * 8}, source, keys);
+  // Four samples × points fields of doubles and the forces the engine keeps; the kernel's lags
+  // twice (direct_history_engine.hpp: as made, and reversed side by side).
+  const std::uint64_t kernel = checked_product({std::min(lags, samples), points, points, 2 * 8}, source, keys);
+  e.memory_bytes = checked_sum({checked_product({cells, 5 * 8}, source, keys), kernel}, source, keys);
   // contact.csv: about 25 characters a number, 3 numbers a point and the time.
   e.disk_bytes = checked_sum({checked_product({cells, 3 * 25}, source, keys), checked_product({samples, 25}, source, keys)},
                              source, keys);
@@ -34,15 +36,30 @@ RunEstimate estimate_tyre_run(const TyreRunSize& z, const std::string& source) {
   e.source = source;
   e.keys = {"[rolling] duration", "[rolling] band_top", "[rolling] contact_window", "[rolling] points_lateral",
             "[rolling] points_circumferential", "[output] fields"};
+  // The direct engine's kernel grows with the square of the window and the run's length: when
+  // it is held, the engine is the first key to change.
+  if (z.direct_history) e.keys.insert(e.keys.begin(), "[rolling] history");
   const std::string keys =
-      "[rolling] duration, band_top, contact_window, points_lateral, points_circumferential, [output] fields";
+      "[rolling] history, duration, band_top, contact_window, points_lateral, points_circumferential, [output] fields";
   // Memory: per step, the totals (six doubles, two counts), the road's column means, and the
   // belt's velocity on the radiation mesh, about as many points as the belt row by row: the
   // whole record, or when streamed one block of it and the block's spectra (about as large).
   const std::uint64_t radiating_rows = z.radiation_block > 0 ? 2 * std::min(z.radiation_block, z.samples) : z.samples;
+  const std::uint64_t window_matrix = checked_product({z.window_points, z.window_points, 8}, source, keys);
+  // The direct engine: the sheared kernel (one window matrix a step) as made and reversed, and
+  // the forces of every step; the modal engine: a state, its decay, input and rate, and the
+  // prediction per pole (complex), and the window's modal shapes.
+  const std::uint64_t engine =
+      z.direct_history
+          ? checked_sum({checked_product({z.samples, window_matrix, 2}, source, keys),
+                         checked_product({z.samples, z.window_points, 8}, source, keys)},
+                        source, keys)
+          : checked_product({z.modal_poles, 5 * 16}, source, keys);
   e.memory_bytes = checked_sum({checked_product({z.samples, 64}, source, keys),
                                 checked_product({z.samples, z.window_columns, 8}, source, keys),
-                                z.radiating ? checked_product({radiating_rows, z.circumferential, 8}, source, keys) : 0},
+                                checked_product({window_matrix, 6}, source, keys), engine,
+                                z.radiating ? checked_product({radiating_rows, z.circumferential, 8}, source, keys) : 0,
+                                z.radiating ? z.radiation_solve_bytes : 0},
                                source, keys);
   // Disk: contact.h5 (floats) and the WAVs.
   std::uint64_t fields_per_step = 0;
@@ -64,7 +81,18 @@ RunEstimate estimate_tyre_run(const TyreRunSize& z, const std::string& source) {
                              source, keys);
   e.what = count(z.samples) + " time steps × " + count(z.window_points) + " contact points, belt of " +
            count(z.lateral) + " × " + count(z.circumferential) + " points, fields \"" + to_string(z.fields) + "\"";
+  if (z.direct_history)
+    e.what += "; the direct history engine holds " + format_bytes(engine) +
+              " of kernel (history = \"auto\" takes the modal engine, a few MB)";
   return e;
+}
+
+std::uint64_t radiation_solve_bytes(const TyreRadiationSettings& settings, std::size_t threads) {
+  TyreSurfaceMeshSpec finest = radiation_mesh_levels(settings).back().spec;
+  finest.geometry = TyreGeometry::undeformed;
+  const TyreSurfaceMesh mesh = make_tyre_surface_mesh(finest);
+  return static_cast<std::uint64_t>(mesh.points.cols()) * static_cast<std::uint64_t>(mesh.sources.cols()) * 16u *
+         std::max<std::uint64_t>(1, threads);
 }
 
 RunEstimate estimate_road_run(std::uint64_t samples, std::uint64_t lines, const std::string& source) {

@@ -10,11 +10,13 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "contact/rolling_settings.hpp"
 #include "contact/rolling_tyre.hpp"
+#include "core/cache_limit.hpp"
 #include "core/case_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -204,6 +206,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
   if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
+  if (options.cache_limit) sound.cache_limit = *options.cache_limit;
+  // A folder over its limit (a smaller limit than before, entries of the other caches, an older
+  // version's larger entries) is trimmed before the run adds to it.
+  if (options.cache) keep_cache_within(*options.cache, sound.cache_limit);
 
   TyreGrid grid;
   grid.radius = model.radius;
@@ -244,7 +250,17 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   size.window_columns = static_cast<std::uint64_t>(grid.window);
   size.lateral = static_cast<std::uint64_t>(grid.lateral);
   size.circumferential = static_cast<std::uint64_t>(grid.circumferential);
+  size.direct_history = settings.history == HistoryKind::direct;
+  for (Eigen::Index r = 0; r < static_cast<Eigen::Index>(rolling_modes->lateral_modes()) * (rolling_modes->orders() + 1); ++r)
+    size.modal_poles += rolling_modes->mode(r).size();
   size.radiating = sound.enabled;
+  if (sound.enabled) {
+    TyreRadiationSettings radiation = sound.radiation;
+    radiation.sample_rate_hz = 1.0 / dt;
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    size.radiation_solve_bytes =
+        radiation_solve_bytes(radiation, radiation.threads > 0 ? static_cast<std::size_t>(radiation.threads) : cores);
+  }
   // A run longer than a block streams the tread velocity through the radiation (issue 13).
   const bool stream_sound = sound.enabled && TyreSoundStream::wanted(steps + 1, 1.0 / dt);
   size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;

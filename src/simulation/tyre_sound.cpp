@@ -18,6 +18,7 @@
 #include "core/config_table.hpp"
 #include "core/csv.hpp"
 #include "core/output_directory.hpp"
+#include "core/byte_size.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
 #include "radiation/radiation_cache.hpp"
@@ -85,6 +86,12 @@ TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const C
   s.radiation.mesh.sidewall_rings = static_cast<int>(radiation.integer("sidewall_rings", 12, 1, 256));
   s.radiation.mesh.contact_refinement = radiation.between("contact_refinement", 0.999, 1000.001, 10.0);
   s.radiation.threads = static_cast<int>(radiation.integer("threads", 0, 0, 1024));
+  // The cache folder's size limit (core/cache_limit.hpp); --cache-limit overrides it.
+  if (const std::string limit_text = radiation.text("cache_limit", ""); !limit_text.empty()) {
+    const std::optional<std::uint64_t> limit = parse_byte_size(limit_text);
+    if (!limit) radiation.fail("cache_limit", std::string("must be ") + kByteSizeForms + " (got \"" + limit_text + "\")");
+    s.cache_limit = *limit;
+  }
   // Finer meshes for the upper anchors (tyre_radiation.hpp): the tread split in 2 (4, …) above
   // c/(n·2πR/mesh_around); 0: the mesh above for every anchor.
   s.radiation.points_per_wavelength = radiation.between("points_per_wavelength", -0.001, 20.0, 4.0);
@@ -275,7 +282,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   ProgressReporter bar("radiation " + source, radiation->anchors(sample_rate).size(), {}, progress,
                        settings.progress_sink);
   std::optional<RadiationCache> cache;
-  if (settings.cache_folder) cache.emplace(*settings.cache_folder);
+  if (settings.cache_folder) cache.emplace(*settings.cache_folder, settings.cache_limit);
   const RadiatedSound sound = radiation->radiate(tread_velocity, sample_rate, &bar, cache ? &*cache : nullptr);
   bar.finish();
   const double radiation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -314,7 +321,7 @@ void TyreSoundStream::push(std::span<const double> tread_velocity) {
   if (!stream_) {
     // The first sample: the radiating body is known (the caller set the settings' deformation).
     radiation_ = make_radiation(settings_);
-    if (settings_.cache_folder) cache_ = std::make_unique<RadiationCache>(*settings_.cache_folder);
+    if (settings_.cache_folder) cache_ = std::make_unique<RadiationCache>(*settings_.cache_folder, settings_.cache_limit);
     ProgressReporter bar("radiation " + source_, radiation_->anchors(sample_rate_).size(), {}, progress_,
                          settings_.progress_sink);
     stream_ = std::make_unique<TyreRadiationStream>(*radiation_, static_cast<Eigen::Index>(tread_velocity.size()), samples_,

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/cache_limit.hpp"
 #include "core/gnuplot.hpp"
 #include "radiation/receivers.hpp"
 #include "radiation/tyre_radiation.hpp"
@@ -37,12 +38,15 @@ struct TyreSoundSettings {
   // The cache of the radiation's anchor operators (radiation/radiation_cache.hpp): none, or
   // the cache folder (core/cache_folder.hpp). Not a case key: the command line chooses it.
   std::optional<std::filesystem::path> cache_folder;
+  // The cache folder's size limit, kept by evicting the least recently used entries
+  // (core/cache_limit.hpp): [radiation] cache_limit, which --cache-limit overrides.
+  std::uint64_t cache_limit = kDefaultCacheLimitBytes;
   // Told of the radiation's progress over its anchors (core/progress.hpp); not a case key.
   ProgressSink* progress_sink = nullptr;
 };
 
 // [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
-// sidewall_rings, contact_refinement, threads, geometry ("deformed": the caller sets
+// sidewall_rings, contact_refinement, threads, cache_limit, geometry ("deformed": the caller sets
 // radiation.mesh.deformation from the contact solution; "undeformed"); [output] wav, audio_rate,
 // wav_duration. The tyre's radius and width (m) shape the radiating body.
 // `default_max_frequency` (Hz): max_frequency when the case does not give it (the upper edge of

@@ -148,6 +148,7 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
         run_options.progress = false;
         run_options.radiation_threads = radiation_threads;
         run_options.cache = options.cache;
+        run_options.cache_limit = options.cache_limit;
         run_options.case_text = study_case_text(table);
         const fs::path folder = case_folder(options.out, c);
         if (finished(folder, run_options.case_text)) {

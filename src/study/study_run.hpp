@@ -9,6 +9,7 @@
 // before the gather), and a failure with fail_fast on any rank stops the cases every rank has
 // not started yet.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -32,6 +33,8 @@ struct StudyRunOptions {
   bool progress = true;       // cases done, with an ETA, on a terminal (not in CI)
   // The cache folder the cases share (CaseRunOptions::cache); std::nullopt: none.
   std::optional<std::filesystem::path> cache = default_cache_directory();
+  // --cache-limit (CaseRunOptions::cache_limit); none: each case's [radiation] cache_limit, else the default.
+  std::optional<std::uint64_t> cache_limit;
   // Told of the cases done out of this rank's cases (core/progress.hpp); none: nobody.
   ProgressSink* progress_sink = nullptr;
 };

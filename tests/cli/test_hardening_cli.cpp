@@ -139,6 +139,43 @@ TEST(OversizedCase, ATyreRunThatCannotFitIsRefusedInWellUnderASecond) {
   EXPECT_TRUE(ws.leftovers().empty());
 }
 
+// The direct history engine on the default 5 kHz grid: 0.1 s is 1147 steps, and the engine keeps
+// one 2060 × 2060 kernel matrix a step, twice (about 78 GB). Before the estimate counted the
+// engine, this case ran for 98 s and died of std::bad_alloc (or the kernel's OOM killer). Now it
+// is refused up front, naming [rolling] history first; the time it takes is measured in
+// bench/cache_footprint.sh, not here.
+TEST(OversizedCase, TheDirectEngineOnTheDefaultGridIsRefusedNamingTheHistoryKey) {
+  Workspace ws;
+  const std::string rough = std::string(ROLLNOISE_SOURCE_DIR) + "/models/cases/plate_rough_80kmh.toml";
+  const std::vector<std::string> args{"simulate", rough, "--out", "result", "--set", "rolling.duration=0.1",
+                                      "--set", "rolling.history=direct", "--set", "radiation.enabled=false"};
+  const RunResult r = ws.run(args);
+  EXPECT_EQ(r.status, 2) << describe(r);
+  EXPECT_TRUE(contains(r.err, "plate_rough_80kmh.toml: [rolling] history, [rolling] duration")) << r.err;
+  EXPECT_TRUE(contains(r.err, "the direct history engine holds")) << r.err;
+  EXPECT_TRUE(contains(r.err, "GB of kernel")) << r.err;
+  EXPECT_TRUE(contains(r.err, "of memory")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--force")) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(ws.path("result")));
+  EXPECT_TRUE(ws.leftovers().empty());
+  // The same run with the modal engine (history = "auto") fits: the engine, not the grid or the
+  // duration, made it too large.
+  const RunResult fits = ws.run({"simulate", rough, "--out", "modal", "--set", "rolling.duration=0.1", "--set",
+                                 "rolling.history=auto", "--set", "radiation.enabled=false", "--set",
+                                 "output.plots=false", "--set", "output.fields=\"none\""});
+  EXPECT_EQ(fits.status, 0) << describe(fits);
+  // --force skips the estimate: the run starts and makes its kernel until the address-space limit
+  // (1.5 GB, so that the test does not take the machine's memory) stops it, an internal error.
+  std::vector<std::string> forced(args);
+  forced[3] = "forced";
+  forced.push_back("--force");
+  const RunResult f = ws.run(forced, "ulimit -v 1500000; ");
+  EXPECT_EQ(f.status, 1) << describe(f);
+  EXPECT_FALSE(contains(f.err, "--force")) << "not refused: " << f.err;
+  EXPECT_FALSE(fs::exists(ws.path("forced")));
+}
+
 // The output of a point run measured against the space it may take: under a file-size limit of
 // 16 kB its 250 kB contact.csv cannot be written, so the run is refused before it starts.
 TEST(OversizedCase, APointRunLargerThanTheFileSizeLimitIsRefusedAndForceRunsIt) {

@@ -16,6 +16,7 @@
 #include <ostream>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <string>
 #include <utility>
 #include <vector>
@@ -1141,6 +1142,12 @@ TEST(CacheCli, HitEqualsNoCacheAndDamagedEntriesAreRecomputed) {
   }
   EXPECT_EQ(read_json(ws.path("repaired") / "summary.json")["radiation"]["anchors_from_cache"].get<std::size_t>(), anchors - 2);
   expect_same_sound(ws.path("none"), ws.path("repaired"));
+  // The damaged entries were stored again whole: the next run finds every anchor, silently.
+  const RunResult again = ws.run({"simulate", "dac.toml", "--out", "again", "--cache", cache});
+  ASSERT_EQ(again.status, 0) << describe(again);
+  EXPECT_TRUE(again.err.empty()) << again.err;
+  EXPECT_EQ(read_json(ws.path("again") / "summary.json")["radiation"]["anchors_from_cache"].get<std::size_t>(), anchors);
+  expect_same_sound(ws.path("none"), ws.path("again"));
   EXPECT_TRUE(ws.leftovers().empty());
 }
 
@@ -1193,6 +1200,154 @@ TEST(CacheCli, ListAndClear) {
     EXPECT_TRUE(contains(h.out, "--cache") && contains(h.out, "--no-cache")) << h.out;
   }
   const RunResult both = ws.run({"simulate", "dac.toml", "--cache", cache, "--no-cache"});
+  EXPECT_EQ(both.status, 2) << describe(both);
+}
+
+namespace {
+
+// The bytes of the radiation entries in `folder` (not the unfinished writes), and the largest.
+struct FolderSize {
+  std::uintmax_t total = 0, largest = 0;
+  std::size_t entries = 0;
+};
+FolderSize radiation_size(const fs::path& folder) {
+  FolderSize size;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (!starts_with(name, "radiation-")) continue;
+    std::error_code gone;
+    const std::uintmax_t bytes = fs::file_size(it->path(), gone);
+    if (gone) continue;  // removed by a trim while listed
+    size.total += bytes;
+    size.largest = std::max(size.largest, bytes);
+    ++size.entries;
+  }
+  return size;
+}
+
+}  // namespace
+
+// Two processes fill one cache folder at once, on two bodies (dac11 and sma11 patches), under a
+// limit of half of one body's entries. The folder never holds more than the limit plus the one
+// entry each process may have renamed in and not yet trimmed (radiation threads = 1), and ends
+// within the limit; both runs give what they give without the cache. Without eviction the
+// folder would end at two bodies' worth, four times the limit.
+TEST(CacheCli, TheLimitIsKeptWhileTwoProcessesWriteToTheFolder) {
+  Workspace first, second;
+  const Edit one_thread{"radiation", "threads", "1"};
+  first.write("dac.toml", edit_case(short_sound_case(library_surface("dac11.toml")), one_thread));
+  second.write("sma.toml", edit_case(short_sound_case(library_surface("sma11.toml")), one_thread));
+  // One body's entries, measured in a folder of their own.
+  const fs::path sizing = first.path("sizing");
+  const RunResult alone = first.run({"simulate", "dac.toml", "--out", "alone", "--cache", sizing.string()});
+  ASSERT_EQ(alone.status, 0) << describe(alone);
+  const FolderSize body = radiation_size(sizing);
+  ASSERT_GE(body.entries, 5u);
+  const std::uintmax_t limit = body.total / 2;
+  const RunResult none_sma = second.run({"simulate", "sma.toml", "--out", "none", "--no-cache"});
+  ASSERT_EQ(none_sma.status, 0) << describe(none_sma);
+
+  const fs::path shared = first.path("shared");
+  const std::string limit_text = std::to_string(limit);
+  std::atomic<int> running{2};
+  RunResult dac, sma;
+  std::thread a([&] {
+    dac = first.run({"simulate", "dac.toml", "--out", "shared_run", "--cache", shared.string(), "--cache-limit", limit_text});
+    --running;
+  });
+  std::thread b([&] {
+    sma = second.run({"simulate", "sma.toml", "--out", "shared_run", "--cache", shared.string(), "--cache-limit", limit_text});
+    --running;
+  });
+  std::uintmax_t most = 0;
+  std::size_t samples = 0;
+  while (running > 0) {
+    most = std::max(most, radiation_size(shared).total);
+    ++samples;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  a.join();
+  b.join();
+  ASSERT_EQ(dac.status, 0) << describe(dac);
+  ASSERT_EQ(sma.status, 0) << describe(sma);
+  EXPECT_EQ(dac.err.find("damaged"), std::string::npos) << dac.err;
+  EXPECT_EQ(sma.err.find("damaged"), std::string::npos) << sma.err;
+  const FolderSize end = radiation_size(shared);
+  EXPECT_LE(end.total, limit) << end.entries << " entries at the end";
+  EXPECT_GT(end.entries, 0u);
+  EXPECT_LE(most, limit + 2 * body.largest) << "largest total seen in " << samples << " samples";
+  RecordProperty("folder_samples", static_cast<int>(samples));
+  RecordProperty("most_seen_over_limit", static_cast<int>(most > limit ? most - limit : 0));
+  // Eviction never changes a result: each run equals its run without the cache.
+  expect_same_sound(first.path("alone"), first.path("shared_run"));
+  expect_same_sound(second.path("none"), second.path("shared_run"));
+  EXPECT_TRUE(first.leftovers().empty());
+  for (const auto& e : fs::directory_iterator(shared))
+    EXPECT_FALSE(starts_with(e.path().filename().string(), ".")) << "an unfinished write left: " << e.path();
+}
+
+// The limit's sources: --cache-limit, else [radiation] cache_limit, else 4 GB; what is not a size
+// is refused (exit status 2) naming the option or the key. A run trims a folder over its limit
+// before it starts, the least recently used entries first (a hit counts as a use).
+TEST(CacheCli, TheLimitComesFromTheOptionOrTheKeyAndTheOldestEntriesGoFirst) {
+  Workspace ws;
+  ws.write("dac.toml", short_sound_case(library_surface("dac11.toml")));
+  const std::string cache = ws.path("cache").string();
+  const RunResult filled = ws.run({"simulate", "dac.toml", "--out", "filled", "--cache", cache});
+  ASSERT_EQ(filled.status, 0) << describe(filled);
+  std::vector<fs::path> entries = radiation_entries(cache);
+  ASSERT_GE(entries.size(), 4u);
+  // Ages: the first entry the oldest, then the others in order, an hour apart.
+  const auto now = fs::file_time_type::clock::now();
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    fs::last_write_time(entries[i], now - std::chrono::hours(static_cast<int>(entries.size() - i)));
+  const std::uintmax_t total = radiation_size(cache).total;
+  // A limit one byte short of the total: the oldest entry goes when the run starts. The warm run
+  // finds the others (each hit marks its entry used) and solves that anchor again; its store
+  // trims once more, the entry first used in this run.
+  const RunResult trimmed = ws.run({"simulate", "dac.toml", "--out", "trimmed", "--cache", cache, "--cache-limit",
+                                    std::to_string(total - 1)});
+  ASSERT_EQ(trimmed.status, 0) << describe(trimmed);
+  const nlohmann::json radiation = read_json(ws.path("trimmed") / "summary.json")["radiation"];
+  EXPECT_EQ(radiation["anchors_from_cache"].get<std::size_t>(), entries.size() - 1);
+  ASSERT_TRUE(fs::exists(entries[0])) << "solved again and stored";
+  EXPECT_GT(fs::last_write_time(entries[0]), now - std::chrono::minutes(10)) << "stored by this run";
+  std::size_t kept = 0;
+  for (std::size_t i = 1; i < entries.size(); ++i) {
+    if (!fs::exists(entries[i])) continue;
+    ++kept;
+    EXPECT_GT(fs::last_write_time(entries[i]), now - std::chrono::minutes(10)) << "a hit marks the entry used";
+  }
+  EXPECT_EQ(kept, entries.size() - 2) << "one more went after the store";
+  EXPECT_LE(radiation_size(cache).total, total - 1);
+  expect_same_sound(ws.path("filled"), ws.path("trimmed"));
+
+  // The case's key, when the option is not given: a limit below every entry empties the folder
+  // and stores nothing more (each entry alone is over it: one warning).
+  ws.write("small.toml", edit_case(short_sound_case(library_surface("dac11.toml")), {"radiation", "cache_limit", "\"1 kB\""}));
+  const RunResult small = ws.run({"simulate", "small.toml", "--out", "small", "--cache", cache});
+  ASSERT_EQ(small.status, 0) << describe(small);
+  EXPECT_TRUE(radiation_entries(cache).empty());
+  EXPECT_TRUE(contains(small.err, "is larger than the cache's limit (1 kB): not stored")) << small.err;
+  EXPECT_EQ(count_lines(small.err), 1u) << small.err;
+  expect_same_sound(ws.path("filled"), ws.path("small"));
+  // The option overrides the key.
+  const RunResult option = ws.run({"simulate", "small.toml", "--out", "option", "--cache", cache, "--cache-limit", "1GB"});
+  ASSERT_EQ(option.status, 0) << describe(option);
+  EXPECT_EQ(radiation_entries(cache).size(), entries.size());
+
+  // Not sizes.
+  const RunResult bad_option = ws.run({"simulate", "dac.toml", "--out", "bad", "--cache", cache, "--cache-limit", "lots"});
+  EXPECT_EQ(bad_option.status, 2) << describe(bad_option);
+  EXPECT_TRUE(contains(bad_option.err, "command line: --cache-limit: must be a size such as \"4 GB\"")) << bad_option.err;
+  EXPECT_EQ(count_lines(bad_option.err), 1u) << bad_option.err;
+  ws.write("bad.toml", edit_case(short_sound_case(library_surface("dac11.toml")), {"radiation", "cache_limit", "\"-3 GB\""}));
+  const RunResult bad_key = ws.run({"simulate", "bad.toml", "--out", "bad", "--cache", cache});
+  EXPECT_EQ(bad_key.status, 2) << describe(bad_key);
+  EXPECT_TRUE(contains(bad_key.err, "bad.toml: [radiation] cache_limit: must be a size such as")) << bad_key.err;
+  EXPECT_FALSE(fs::exists(ws.path("bad")));
+  const RunResult both = ws.run({"simulate", "dac.toml", "--no-cache", "--cache-limit", "1GB"});
   EXPECT_EQ(both.status, 2) << describe(both);
 }
 

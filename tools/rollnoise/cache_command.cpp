@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/byte_size.hpp"
 #include "core/cache_folder.hpp"
 #include "core/error.hpp"
 #include "simulation/cache_contents.hpp"
@@ -52,14 +53,27 @@ fs::path folder_of(const CacheOptions& options) {
 
 }  // namespace
 
-void add_cache_options(CLI::App& cmd, std::string& cache, bool& no_cache) {
+void add_cache_options(CLI::App& cmd, std::string& cache, bool& no_cache, std::string& cache_limit) {
   CLI::Option* folder = cmd.add_option(
       "--cache", cache,
       "Cache folder of the radiation's equivalent-source solves and the tyre models' tables and fits (default: "
       "$ROLLNOISE_CACHE, else $XDG_CACHE_HOME/rollnoise, else ~/.cache/rollnoise); one that cannot be written is "
       "skipped with a warning");
-  cmd.add_flag("--no-cache", no_cache, "Use no cache: solve everything, read and write nothing in the cache folder")
-      ->excludes(folder);
+  CLI::Option* off =
+      cmd.add_flag("--no-cache", no_cache, "Use no cache: solve everything, read and write nothing in the cache folder")
+          ->excludes(folder);
+  cmd.add_option("--cache-limit", cache_limit,
+                 "Size limit of the cache folder, such as 2GB or 500MB: the least recently used entries are removed "
+                 "to keep within it (default: the case's [radiation] cache_limit, else 4 GB)")
+      ->type_name("SIZE")
+      ->excludes(off);
+}
+
+std::optional<std::uint64_t> parse_cache_limit(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const std::optional<std::uint64_t> limit = parse_byte_size(text);
+  if (!limit) throw InputError("command line", "--cache-limit", std::string("must be ") + kByteSizeForms + " (got \"" + text + "\")");
+  return limit;
 }
 
 CLI::App* add_cache_command(CLI::App& app, CacheOptions& options, CLI::App*& list, CLI::App*& clear) {

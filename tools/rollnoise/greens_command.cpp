@@ -63,7 +63,7 @@ CLI::App* add_greens_command(CLI::App& app, GreensOptions& options) {
                   "A model file (models/tyres/NAME.toml): sdof, coupled_sdof, plate, two_layer or tabulated")
       ->required();
   cmd->add_option("--out", options.out, "Output folder (default out/<model name>_greens); written atomically");
-  add_cache_options(*cmd, options.cache, options.no_cache);
+  add_cache_options(*cmd, options.cache, options.no_cache, options.cache_limit);
   cmd->add_option("--frequencies", options.frequencies,
                   "F1:F2:N, N frequencies evenly spaced from F1 to F2 inclusive, Hz (default 0 to the model's "
                   "top frequency, 501 of them: 5 kHz in 10 Hz steps for a tyre); the row at 0 Hz is the static compliance");
@@ -91,6 +91,7 @@ int run_greens(const GreensOptions& options) {
   run.model = options.model;
   // The same cache folder as simulate's (two-layer tables, mode fits).
   run.cache = usable_cache_folder(options.cache, options.no_cache);
+  run.cache_limit = parse_cache_limit(options.cache_limit);
   run.distances = options.distances;
   run.force = options.force;
   // The option's syntax is the command line's: read here, before the model is built.

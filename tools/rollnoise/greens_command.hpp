@@ -19,6 +19,7 @@ struct GreensOptions {
   bool force = false;               // run even when the size estimate says it does not fit
   std::string cache;                // --cache DIR (empty: the default folder, core/cache_folder.hpp)
   bool no_cache = false;
+  std::string cache_limit;  // --cache-limit SIZE (empty: the case's, else the default)
 };
 
 CLI::App* add_greens_command(CLI::App& app, GreensOptions& options);

@@ -29,7 +29,7 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
                   "Override a case value: section.key=value (value as TOML; bare words are strings). Repeatable")
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);  // one value per --set, so a case file after it stays the case
-  add_cache_options(*cmd, options.cache, options.no_cache);
+  add_cache_options(*cmd, options.cache, options.no_cache, options.cache_limit);
   cmd->add_flag("--force", options.force,
                 "Run even when the estimate of the run's memory or output exceeds what the machine has");
   cmd->footer(
@@ -43,6 +43,7 @@ int run_simulate(const SimulateOptions& options) {
   CaseRunOptions run;
   run.force = options.force;
   run.cache = usable_cache_folder(options.cache, options.no_cache);
+  run.cache_limit = parse_cache_limit(options.cache_limit);
   const CaseResult result = run_case(file, options.out, run);
   std::printf("rollnoise: wrote %s (%s)\n", result.out.string().c_str(), result.written.c_str());
   return 0;

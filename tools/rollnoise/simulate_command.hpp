@@ -16,6 +16,7 @@ struct SimulateOptions {
   bool force = false;  // run a case even when it looks too large for the machine
   std::string cache;   // --cache DIR (empty: the default folder, core/cache_folder.hpp)
   bool no_cache = false;
+  std::string cache_limit;  // --cache-limit SIZE (empty: the case's, else the default)
 };
 
 // Registers the verb on `app`; the options are filled in by the parser.

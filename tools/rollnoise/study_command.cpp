@@ -32,7 +32,7 @@ CLI::App* add_study_command(CLI::App& app, StudyOptions& options) {
                   "the results when every case has ended");
   cmd->add_option("--threads", options.threads, "Cases side by side on this machine (default: one per core; one per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
-  add_cache_options(*cmd, options.cache, options.no_cache);
+  add_cache_options(*cmd, options.cache, options.no_cache, options.cache_limit);
   cmd->add_flag("--fail-fast", options.fail_fast, "Start no more cases after one fails (on any MPI rank)");
   cmd->add_flag("--restart", options.restart, "Run every case again, also those an earlier run finished");
   cmd->add_flag("--yes", options.yes,
@@ -50,6 +50,7 @@ int run_study(const StudyOptions& options) {
   run.fail_fast = options.fail_fast;
   // Resolved once for the whole study, so that a folder that cannot be written is one warning.
   run.cache = usable_cache_folder(options.cache, options.no_cache);
+  run.cache_limit = parse_cache_limit(options.cache_limit);
   StudyRun study;
   try {
     study = rollnoise::run_study(options.study_file, run, options.restart, options.yes, mpi);

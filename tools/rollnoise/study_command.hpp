@@ -18,6 +18,7 @@ struct StudyOptions {
   bool yes = false;
   std::string cache;  // --cache DIR (empty: the default folder)
   bool no_cache = false;
+  std::string cache_limit;  // --cache-limit SIZE (empty: the case's, else the default)
 };
 
 CLI::App* add_study_command(CLI::App& app, StudyOptions& options);
