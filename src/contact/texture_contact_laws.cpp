@@ -29,15 +29,6 @@ std::string metres(double value) {
 
 }  // namespace
 
-double pixel_height(const RoadSurface& road, double x, double y, double px, double py, std::size_t samples) {
-  const double n = static_cast<double>(samples);
-  double sum = 0.0;
-  for (std::size_t a = 0; a < samples; ++a)
-    for (std::size_t b = 0; b < samples; ++b)
-      sum += road.height(x + (static_cast<double>(a) + 0.5) * px / n, y + (static_cast<double>(b) + 0.5) * py / n);
-  return sum / (n * n);
-}
-
 CellPixels cell_pixels(double dx, double dy, std::optional<double> road_spacing, const std::string& source,
                        const std::string& key) {
   const double spacing = road_spacing.value_or(dx / 4.0);
@@ -57,22 +48,39 @@ double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber) {
   return rubber.youngs_modulus / (1.0 - rubber.poisson_ratio * rubber.poisson_ratio) * dx * dy;
 }
 
-void fill_block_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels, std::size_t first,
-                        std::size_t count, std::vector<double>& heights) {
+CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels) {
   const std::size_t lines = grid.lines.size();
+  CellHeights out;
+  out.per_cell = pixels.nx * pixels.ny;
+  out.values.assign(grid.positions * lines * out.per_cell, 0.0f);
   const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
-  for (std::size_t m = 0; m < count; ++m) {
-    const double xc = grid.x0 + static_cast<double>(first + m) * grid.step;
-    for (std::size_t j = 0; j < lines; ++j)
-      for (std::size_t a = 0; a < pixels.nx; ++a)
-        for (std::size_t b = 0; b < pixels.ny; ++b)
-          heights[((m * lines + j) * pixels.nx + a) * pixels.ny + b] =
-              pixel_height(road, xc - 0.5 * grid.dx + static_cast<double>(a) * px,
-                           grid.lines[j] - 0.5 * grid.dy + static_cast<double>(b) * py, px, py, pixels.samples);
-  }
+  const std::size_t s = pixels.samples;
+  const double weight = 1.0 / static_cast<double>(s * s);
+  // Across the road outermost: a generated surface makes its lines along x one lateral position
+  // at a time and keeps a bounded number of them, so each is made once here (read in the order
+  // of the cells, a fine surface's hundreds of lateral positions would be made again and again).
+  std::vector<double> sum(grid.positions * pixels.nx);
+  for (std::size_t j = 0; j < lines; ++j)
+    for (std::size_t b = 0; b < pixels.ny; ++b) {
+      std::fill(sum.begin(), sum.end(), 0.0);
+      for (std::size_t sb = 0; sb < s; ++sb) {
+        const double y = grid.lines[j] - 0.5 * grid.dy + (static_cast<double>(b) + (static_cast<double>(sb) + 0.5) / static_cast<double>(s)) * py;
+        for (std::size_t m = 0; m < grid.positions; ++m) {
+          const double x0 = grid.x0 + static_cast<double>(m) * grid.step - 0.5 * grid.dx;
+          for (std::size_t a = 0; a < pixels.nx; ++a)
+            for (std::size_t sa = 0; sa < s; ++sa)
+              sum[m * pixels.nx + a] +=
+                  road.height(x0 + (static_cast<double>(a) + (static_cast<double>(sa) + 0.5) / static_cast<double>(s)) * px, y);
+        }
+      }
+      for (std::size_t m = 0; m < grid.positions; ++m)
+        for (std::size_t a = 0; a < pixels.nx; ++a)
+          out.values[((m * lines + j) * pixels.nx + a) * pixels.ny + b] = static_cast<float>(weight * sum[m * pixels.nx + a]);
+    }
+  return out;
 }
 
-std::uint64_t texture_law_digest(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+std::uint64_t texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
                                  const TreadRubber& rubber) {
   FnvDigest d;
   d.text("texture contact laws");
@@ -80,13 +88,7 @@ std::uint64_t texture_law_digest(const RoadSurface& road, const ContactCellGrid&
   for (const double v : {rubber.youngs_modulus, rubber.poisson_ratio, grid.dx, grid.dy, grid.x0, grid.step}) d.real(v);
   for (const std::size_t v : {pixels.nx, pixels.ny, pixels.samples, grid.positions, grid.lines.size()}) d.unsigned_integer(v);
   for (const double y : grid.lines) d.real(y);
-  const std::size_t n = pixels.nx * pixels.ny;
-  std::vector<double> heights(kBlock * grid.lines.size() * n);
-  for (std::size_t first = 0; first < grid.positions; first += kBlock) {
-    const std::size_t count = std::min(kBlock, grid.positions - first);
-    fill_block_heights(road, grid, pixels, first, count, heights);
-    d.words(reinterpret_cast<const char*>(heights.data()), count * grid.lines.size() * n * sizeof(double));
-  }
+  d.words(reinterpret_cast<const char*>(heights.values.data()), heights.values.size() * sizeof(float));
   return d.value();
 }
 
@@ -96,29 +98,28 @@ double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, con
   return probe.punch_compliance();
 }
 
-void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+void for_each_cell_path(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
                         const TreadRubber& rubber, double force_cap, int threads, const CellPathVisitor& visit,
                         ProgressReporter* progress) {
-  const std::size_t lines = grid.lines.size();
   const std::size_t n = pixels.nx * pixels.ny;
-  if (lines == 0 || grid.positions == 0 || n == 0 || !(grid.dx > 0.0) || !(grid.dy > 0.0))
-    throw std::invalid_argument("for_each_cell_path: an empty grid");
+  const std::size_t cells = grid.positions * grid.lines.size();
+  if (cells == 0 || n == 0 || heights.per_cell != n || heights.values.size() != cells * n)
+    throw std::invalid_argument("for_each_cell_path: the heights do not match the grid");
   const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
   const int workers = std::max(1, threads);
-  std::vector<double> heights(kBlock * lines * n);
-  for (std::size_t first = 0; first < grid.positions; first += kBlock) {
-    const std::size_t count = std::min(kBlock, grid.positions - first);
-    fill_block_heights(road, grid, pixels, first, count, heights);
-    // The block's cells, split evenly over the threads; each cell is solved on its own, so the
-    // split does not change a number.
-    const std::size_t cells = count * lines;
+  // Cells in blocks, each block split evenly over the threads; each cell is solved on its own,
+  // so the split does not change a number.
+  const std::size_t block = kBlock * grid.lines.size();
+  for (std::size_t first = 0; first < cells; first += block) {
+    const std::size_t count = std::min(block, cells - first);
     std::vector<std::exception_ptr> failures(static_cast<std::size_t>(workers));
     const auto work = [&](int w) {
       try {
         HalfspaceLoadPath path(pixels.nx, pixels.ny, px, py, rubber.youngs_modulus, rubber.poisson_ratio);
-        for (std::size_t c = static_cast<std::size_t>(w); c < cells; c += static_cast<std::size_t>(workers)) {
-          const std::span<const double> cell(heights.data() + c * n, n);
-          visit(first * lines + c, path.trace(cell, force_cap), *std::max_element(cell.begin(), cell.end()));
+        std::vector<double> cell(n);
+        for (std::size_t c = first + static_cast<std::size_t>(w); c < first + count; c += static_cast<std::size_t>(workers)) {
+          std::copy_n(heights.values.begin() + static_cast<std::ptrdiff_t>(c * n), n, cell.begin());
+          visit(c, path.trace(cell, force_cap), *std::max_element(cell.begin(), cell.end()));
         }
       } catch (...) {
         failures[static_cast<std::size_t>(w)] = std::current_exception();
@@ -130,13 +131,14 @@ void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, Ce
     pool.clear();
     for (const std::exception_ptr& failure : failures)
       if (failure) std::rethrow_exception(failure);
-    if (progress) progress->update(first + count);
+    if (progress) progress->update((first + count) / grid.lines.size());
   }
 }
 
 std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& road, const ContactCellGrid& grid,
                                                            CellPixels pixels, const TreadRubber& rubber, int threads,
                                                            ProgressReporter* progress, const TextureLawCache* cache) {
+  const CellHeights heights = read_cell_heights(road, grid, pixels);
   const double cap = contact_law_force_cap(grid.dx, grid.dy, rubber);
   // The flat punch's compliance sets the floor of every law's compliance (cell_contact_law.hpp).
   const double punch = cell_punch_compliance(grid, pixels, rubber);
@@ -144,7 +146,7 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
   std::filesystem::path entry;
   if (cache && cache->from_cache) *cache->from_cache = false;
   if (cache && cache->folder) {
-    entry = *cache->folder / contact_law_cache_name(texture_law_digest(road, grid, pixels, rubber));
+    entry = *cache->folder / contact_law_cache_name(texture_law_digest(heights, grid, pixels, rubber));
     std::string warning;
     if (auto stored = read_contact_law_cache(entry, cells, cap, 1e-3 * punch, warning)) {
       if (cache->from_cache) *cache->from_cache = true;
@@ -154,7 +156,7 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
   }
   auto laws = std::make_shared<CellContactLaws>(cells, cap, 1e-3 * punch);
   for_each_cell_path(
-      road, grid, pixels, rubber, cap, threads,
+      heights, grid, pixels, rubber, cap, threads,
       [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
         std::array<double, CellContactLaws::levels> approaches{};
         for (int k = 0; k < CellContactLaws::levels; ++k) {

@@ -47,33 +47,31 @@ struct CellPixels {
 CellPixels cell_pixels(double dx, double dy, std::optional<double> road_spacing, const std::string& source,
                        const std::string& key);
 
-// A pixel's height: the mean of samples × samples road heights over the pixel [x, x + px] ×
-// [y, y + py] (at the centres of its sub-pixels).
-double pixel_height(const RoadSurface& road, double x, double y, double px, double py, std::size_t samples);
-
 // The force at which a law's table ends (extrapolated linearly beyond): the pressure E* over
 // the cell, a strain of order one, far above any cell's force in rolling.
 double contact_law_force_cap(double dx, double dy, const TreadRubber& rubber);
 
+// Every cell's pixel heights (the pixel means, float: a run's cells are millions of pixels),
+// cell-major: ((m·lines + j)·nx + a)·ny + b, read from the road once.
+struct CellHeights {
+  std::vector<float> values;
+  std::size_t per_cell = 0;
+};
+CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels);
+// A digest of everything the laws are made from: every cell's pixel heights, the layout, the
+// rubber and the table's form (contact_law_cache.hpp).
+std::uint64_t texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
+                                 const TreadRubber& rubber);
+
 // Visits every cell's exact law (halfspace_load_path.hpp) up to `force_cap`, on `threads`
 // threads: visit(cell, path, top) with cell = m·lines + j and the cell's first-touch height,
 // called from the worker threads, each cell once (a visitor writes only that cell's slots).
-// `punch_compliance` (optional) receives the cell's flat-punch compliance.
 using CellPathVisitor = std::function<void(std::size_t cell, const std::vector<LoadPathPoint>& path, double top)>;
-void for_each_cell_path(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
+void for_each_cell_path(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
                         const TreadRubber& rubber, double force_cap, int threads, const CellPathVisitor& visit,
                         ProgressReporter* progress = nullptr);
 // The compliance of a flat punch of the cell's size on those pixels, 1/(1ᵀK⁻¹1), m/N.
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber);
-
-// The pixel heights of cells first … first + count − 1 (all lines) into `heights`
-// (cell-major: ((m·lines + j)·nx + a)·ny + b).
-void fill_block_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels, std::size_t first,
-                        std::size_t count, std::vector<double>& heights);
-// A digest of everything the laws are made from: every cell's pixel heights, the layout, the
-// rubber and the table's form (contact_law_cache.hpp).
-std::uint64_t texture_law_digest(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels,
-                                 const TreadRubber& rubber);
 
 // Where the laws are kept between runs: the cache folder (none: not kept), and what the caller
 // is told (whether they came from it; warnings about an entry that could not be used or written).

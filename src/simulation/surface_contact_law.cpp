@@ -66,7 +66,7 @@ SurfaceContactLaw surface_contact_law(const RoadSurface& road, double length, do
   // Each cell's force and contact at the approach grid, and the approach at its table's end.
   std::vector<double> force(cells * kApproaches), end(cells);
   std::vector<int> contacts(cells * kApproaches);
-  for_each_cell_path(road, grid, out.pixels, options.rubber, cap, options.threads,
+  for_each_cell_path(read_cell_heights(road, grid, out.pixels), grid, out.pixels, options.rubber, cap, options.threads,
                      [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
                        std::array<double, CellContactLaws::levels> approaches{};
                        for (int k = 0; k < CellContactLaws::levels; ++k) {
