@@ -5,12 +5,16 @@
 # read from it, and the step loop per step of each. Radiation off. Timed CLI runs; the figures
 # come from each run's summary.json.
 #   bash bench/contact_law_speed.sh [CASE [DURATION_S]]
+# ROLLNOISE_EXE picks the binary (default: the Release build without assertions, build-bench/);
+# CALLGRIND=1 adds the instruction counts of the contact step (several minutes under valgrind).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh >/dev/null
-cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
-cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
-exe=build-bench/tools/rollnoise/rollnoise
+if [[ -z ${ROLLNOISE_EXE:-} ]]; then
+  bash tools/setup.sh >/dev/null
+  cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
+  cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
+fi
+exe=${ROLLNOISE_EXE:-build-bench/tools/rollnoise/rollnoise}
 case=${1:-models/cases/plate_rough_80kmh.toml}
 duration=${2:-1.0}
 out=$(mktemp -d)
@@ -32,11 +36,10 @@ rigid_loop=$(field rigid "['step_loop_time_s']")
 law_loop=$(field texture_warm "['step_loop_time_s']")
 echo "step loop: rigid cells ${rigid_loop} s, texture laws ${law_loop} s: $(python3 -c "print(round($law_loop/$rigid_loop, 2))")x; per step $(python3 -c "print(round(1e3*$rigid_loop/$steps, 3))") ms and $(python3 -c "print(round(1e3*$law_loop/$steps, 3))") ms"
 echo "contact stage: rigid $(field rigid "['contact_time_s']") s, texture cold $(field texture_cold "['contact_time_s']") s, warm $(field texture_warm "['contact_time_s']") s"
-# Instruction counts of the contact step alone (load-independent), under callgrind when it is
-# installed: the rigid cells' LCP (PMatrixLcpSolver::solve) against the laws' Newton step
+# Instruction counts of the contact step alone (load-independent), under callgrind (CALLGRIND=1): the rigid cells' LCP (PMatrixLcpSolver::solve) against the laws' Newton step
 # (TreadNewtonContact::solve), each as the difference of a 0.015 s and a 0.005 s run, which
 # leaves out the steady state's solves.
-if command -v valgrind >/dev/null; then
+if [[ ${CALLGRIND:-0} == 1 ]] && command -v valgrind >/dev/null; then
   count() {  # law duration function -> instructions inside function
     CI=true valgrind --tool=callgrind --callgrind-out-file="$out/cg.$1.$2" --toggle-collect="$3" "$exe" simulate "$case" \
       --out "$out/cg_$1_$2" --set rolling.duration="$2" --set radiation.enabled=false --set output.plots=false \
