@@ -56,27 +56,37 @@ CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& gr
   const double px = grid.dx / static_cast<double>(pixels.nx), py = grid.dy / static_cast<double>(pixels.ny);
   const std::size_t s = pixels.samples;
   const double weight = 1.0 / static_cast<double>(s * s);
-  // Across the road outermost: a generated surface makes its lines along x one lateral position
-  // at a time and keeps a bounded number of them, so each is made once here (read in the order
-  // of the cells, a fine surface's hundreds of lateral positions would be made again and again).
-  std::vector<double> sum(grid.positions * pixels.nx);
-  for (std::size_t j = 0; j < lines; ++j)
-    for (std::size_t b = 0; b < pixels.ny; ++b) {
-      std::fill(sum.begin(), sum.end(), 0.0);
-      for (std::size_t sb = 0; sb < s; ++sb) {
-        const double y = grid.lines[j] - 0.5 * grid.dy + (static_cast<double>(b) + (static_cast<double>(sb) + 0.5) / static_cast<double>(s)) * py;
-        for (std::size_t m = 0; m < grid.positions; ++m) {
-          const double x0 = grid.x0 + static_cast<double>(m) * grid.step - 0.5 * grid.dx;
-          for (std::size_t a = 0; a < pixels.nx; ++a)
-            for (std::size_t sa = 0; sa < s; ++sa)
-              sum[m * pixels.nx + a] +=
-                  road.height(x0 + (static_cast<double>(a) + (static_cast<double>(sa) + 0.5) / static_cast<double>(s)) * px, y);
+  // In blocks along the road, and across the road outermost within a block. A generated road
+  // keeps a bounded part of itself: the aggregate road its tiles along x (5 m), a texture or
+  // profile surface its lines along x, one per lateral position. Read in cell order, a fine
+  // surface's hundreds of lateral lines were made again for every few cells (captif_fine's
+  // 0.2 s run had not read its heights in 14 minutes); read across the whole run for each
+  // lateral position, the aggregate road's tiles were made again for every line. A block of
+  // 2048 positions (4 m at 80 km/h) spans at most two tiles and makes each line once.
+  constexpr std::size_t block = 2048;
+  std::vector<double> sum(block * pixels.nx);
+  for (std::size_t first = 0; first < grid.positions; first += block) {
+    const std::size_t count = std::min(block, grid.positions - first);
+    for (std::size_t j = 0; j < lines; ++j)
+      for (std::size_t b = 0; b < pixels.ny; ++b) {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        for (std::size_t sb = 0; sb < s; ++sb) {
+          const double y = grid.lines[j] - 0.5 * grid.dy +
+                           (static_cast<double>(b) + (static_cast<double>(sb) + 0.5) / static_cast<double>(s)) * py;
+          for (std::size_t m = 0; m < count; ++m) {
+            const double x0 = grid.x0 + static_cast<double>(first + m) * grid.step - 0.5 * grid.dx;
+            for (std::size_t a = 0; a < pixels.nx; ++a)
+              for (std::size_t sa = 0; sa < s; ++sa)
+                sum[m * pixels.nx + a] += road.height(
+                    x0 + (static_cast<double>(a) + (static_cast<double>(sa) + 0.5) / static_cast<double>(s)) * px, y);
+          }
         }
+        for (std::size_t m = 0; m < count; ++m)
+          for (std::size_t a = 0; a < pixels.nx; ++a)
+            out.values[(((first + m) * lines + j) * pixels.nx + a) * pixels.ny + b] =
+                static_cast<float>(weight * sum[m * pixels.nx + a]);
       }
-      for (std::size_t m = 0; m < grid.positions; ++m)
-        for (std::size_t a = 0; a < pixels.nx; ++a)
-          out.values[((m * lines + j) * pixels.nx + a) * pixels.ny + b] = static_cast<float>(weight * sum[m * pixels.nx + a]);
-    }
+  }
   return out;
 }
 
