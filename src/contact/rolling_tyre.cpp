@@ -162,6 +162,30 @@ StaticContact steady_nonlinear_contact(Contact& contact, const Eigen::VectorXd& 
   return StaticContact{d, contact.force()};
 }
 
+// The texture laws of the cells the window's points meet over the run (positions m = 0 …
+// positions − 1 at x(0) + m·dx/p, as the road ring reads them; cell m·Ny + j), computed or read
+// from the cache; what it took goes into the trace.
+std::shared_ptr<const CellContactLaws> texture_laws_of_run(const TyreGrid& grid, int substeps, std::size_t positions,
+                                                           const RoadSurface& road, const TyreRunSettings& settings,
+                                                           TyreContactTrace& trace) {
+  const auto started = std::chrono::steady_clock::now();
+  ContactCellGrid cells;
+  cells.dx = grid.dx();
+  cells.dy = grid.dy();
+  cells.x0 = grid.x(0);
+  cells.step = grid.dx() / substeps;
+  cells.positions = positions;
+  for (int j = 0; j < grid.lateral; ++j) cells.lines.push_back(grid.y(j) - 0.5 * grid.width);
+  trace.law_pixels = cell_pixels(cells.dx, cells.dy, road.sample_spacing(), "", "[road] sample_spacing");
+  const TextureLawCache cache{settings.law_cache, &trace.laws_from_cache, &trace.warnings};
+  auto laws =
+      make_texture_contact_laws(road, cells, trace.law_pixels, settings.rubber, settings.law_threads, nullptr, &cache);
+  trace.law_cells = laws->cells();
+  trace.law_force_cap = laws->force_cap();
+  trace.law_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return laws;
+}
+
 }  // namespace
 
 SteadyRolling solve_steady_rolling(const RollingModes& modes, const Eigen::MatrixXd& local_compliance,
@@ -287,21 +311,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   std::shared_ptr<CellLawSprings> cell_springs;
   TyreContactTrace trace;
   if (texture_law) {
-    const auto started = std::chrono::steady_clock::now();
-    ContactCellGrid cells;
-    cells.dx = grid.dx();
-    cells.dy = grid.dy();
-    cells.x0 = grid.x(0);
-    cells.step = grid.dx() / substeps;
-    cells.positions = road_positions + samples - 1;
-    for (int j = 0; j < grid.lateral; ++j) cells.lines.push_back(grid.y(j) - 0.5 * grid.width);
-    trace.law_pixels = cell_pixels(cells.dx, cells.dy, road.sample_spacing(), "", "[road] sample_spacing");
-    const TextureLawCache cache{settings.law_cache, &trace.laws_from_cache, &trace.warnings};
-    laws = make_texture_contact_laws(road, cells, trace.law_pixels, settings.rubber, settings.law_threads, nullptr,
-                                     &cache);
-    trace.law_cells = laws->cells();
-    trace.law_force_cap = laws->force_cap();
-    trace.law_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    laws = texture_laws_of_run(grid, substeps, road_positions + samples - 1, road, settings, trace);
     cell_springs = std::make_shared<CellLawSprings>(laws, points);
     springs = std::make_unique<TreadNewtonContact>(whole_g0 ? g0 : g0_symmetric, cell_springs, window,
                                                    /*require_symmetric=*/!whole_g0);
@@ -387,12 +397,13 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
           cell_springs->assign(p, cell);
         }
       if (n == 0) springs->warm_start(steady.force);
-    }
-    for (int j = 0; j < grid.lateral && !texture_law; ++j) {
-      road_ring(static_cast<Eigen::Index>(newest % road_positions), j) = filtered_height(newest, j);
-      for (int i = 0; i < grid.window; ++i) {
-        const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
-        r(i + static_cast<Eigen::Index>(grid.window) * j) = road_ring(static_cast<Eigen::Index>(m % road_positions), j);
+    } else {
+      for (int j = 0; j < grid.lateral; ++j) {
+        road_ring(static_cast<Eigen::Index>(newest % road_positions), j) = filtered_height(newest, j);
+        for (int i = 0; i < grid.window; ++i) {
+          const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
+          r(i + static_cast<Eigen::Index>(grid.window) * j) = road_ring(static_cast<Eigen::Index>(m % road_positions), j);
+        }
       }
     }
     auto clock = std::chrono::steady_clock::now();
@@ -401,7 +412,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     if (skew_product) {
       skew_product->apply(previous_force, skew_displacement);
       u0 += skew_displacement;
-    } else if (!whole_g0 && skewness > 0.0) {  // (the dense product when not shift-invariant)
+    } else if (!whole_g0 && skewness > 0.0) {
       u0.noalias() += g0_skew * previous_force;
     }
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
