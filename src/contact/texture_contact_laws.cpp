@@ -17,8 +17,7 @@
 namespace rollnoise {
 namespace {
 
-// Positions per block: the road is read for a block in order along x, then its cells are solved
-// on the threads (a generated road keeps a few tiles, so reading it out of order costs).
+// Positions per block of cells handed to the threads (each block's cells split evenly over them).
 constexpr std::size_t kBlock = 256;
 
 std::string metres(double value) {
@@ -62,7 +61,7 @@ CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& gr
   // surface's hundreds of lateral lines were made again for every few cells (captif_fine's
   // 0.2 s run had not read its heights in 14 minutes); read across the whole run for each
   // lateral position, the aggregate road's tiles were made again for every line. A block of
-  // 2048 positions (4 m at 80 km/h) spans at most two tiles and makes each line once.
+  // 2048 positions (4 m at 80 km/h) spans at most two tiles and makes each line once a block.
   constexpr std::size_t block = 2048;
   std::vector<double> sum(block * pixels.nx);
   for (std::size_t first = 0; first < grid.positions; first += block) {
