@@ -78,19 +78,23 @@ double CellContactLaws::monotone_slope(std::size_t cell, int i) const noexcept {
   return (w1 + w2) / (w1 / secant(i - 1) + w2 / secant(i));
 }
 
-int CellContactLaws::segment_of(std::size_t cell, double delta) const noexcept {
-  // The last node at or below δ (levels: beyond the last node).
-  const float* first = approach_.data() + cell * levels;
-  const auto above = std::upper_bound(first, first + levels, static_cast<float>(delta),
-                                      [](float d, float node) { return static_cast<double>(d) < static_cast<double>(node); });
-  int i = static_cast<int>(above - first);  // nodes 1..i have δ ≤ delta (up to float rounding)
-  while (i > 0 && node_delta(cell, i) > delta) --i;
-  while (i < levels && node_delta(cell, i + 1) <= delta) ++i;
-  return i;
+int CellContactLaws::segment_of(std::size_t cell, double delta, int* hint) const noexcept {
+  // The last node at or below δ (levels: beyond the last node); the hint's segment first.
+  if (hint && *hint >= 0 && *hint <= levels && node_delta(cell, *hint) <= delta &&
+      (*hint == levels || delta < node_delta(cell, *hint + 1)))
+    return *hint;
+  int lo = 0, hi = levels + 1;  // node lo ≤ δ < node hi (hi = levels + 1: none above)
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    if (node_delta(cell, mid) <= delta) lo = mid;
+    else hi = mid;
+  }
+  if (hint) *hint = lo;
+  return lo;
 }
 
-void CellContactLaws::force(std::size_t cell, double delta, double& force, double& slope) const {
-  const int i = segment_of(cell, delta);
+void CellContactLaws::force(std::size_t cell, double delta, double& force, double& slope, int* hint) const {
+  const int i = segment_of(cell, delta, hint);
   const double d0 = node_delta(cell, i), f0 = node_force(i);
   if (i == levels) {
     slope = node_slope(cell, levels);
@@ -142,14 +146,21 @@ double CellContactLaws::approach_at(std::size_t cell, double f) const {
   return solve_on_segment(cell, i, 0.0, 1.0, f);
 }
 
-double CellContactLaws::compression_of(std::size_t cell, double y, double c) const {
+double CellContactLaws::compression_of(std::size_t cell, double y, double c, int* hint) const {
   if (!(y > 0.0)) return 0.0;
-  // The node i with δ_i + c·F_i ≤ y < the next one's (increasing in i).
-  int lo = 0, hi = levels + 1;
-  while (hi - lo > 1) {
-    const int mid = (lo + hi) / 2;
-    if (node_delta(cell, mid) + c * node_force(mid) <= y) lo = mid;
-    else hi = mid;
+  // The node i with δ_i + c·F_i ≤ y < the next one's (increasing in i); the hint's first.
+  const auto below = [&](int i) { return node_delta(cell, i) + c * node_force(i) <= y; };
+  int lo = 0;
+  if (hint && *hint >= 0 && *hint <= levels && below(*hint) && (*hint == levels || !below(*hint + 1))) {
+    lo = *hint;
+  } else {
+    int hi = levels + 1;
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      if (below(mid)) lo = mid;
+      else hi = mid;
+    }
+    if (hint) *hint = lo;
   }
   if (lo == levels) {
     const double d = node_delta(cell, levels), s = node_slope(cell, levels);
@@ -158,10 +169,10 @@ double CellContactLaws::compression_of(std::size_t cell, double y, double c) con
   return solve_on_segment(cell, lo, 1.0, c, y);
 }
 
-double CellContactLaws::stored_energy(std::size_t cell, double delta) const {
+double CellContactLaws::stored_energy(std::size_t cell, double delta, int* hint) const {
   // The nodes' energies, then the part of the segment: ∫₀^t of the cubic Hermite basis,
   // h·[f0(t − t³ + t⁴/2) + h·m0(t²/2 − 2t³/3 + t⁴/4) + f1(t³ − t⁴/2) + h·m1(t⁴/4 − t³/3)].
-  const int i = segment_of(cell, delta);
+  const int i = segment_of(cell, delta, hint);
   const double d0 = node_delta(cell, i);
   if (i == levels) {
     const double d = delta - d0;
@@ -175,17 +186,19 @@ double CellContactLaws::stored_energy(std::size_t cell, double delta) const {
 }
 
 CellLawSprings::CellLawSprings(std::shared_ptr<const CellContactLaws> laws, Eigen::Index points)
-    : laws_(std::move(laws)), cell_(static_cast<std::size_t>(points), 0) {
+    : laws_(std::move(laws)), cell_(static_cast<std::size_t>(points), 0), hint_(static_cast<std::size_t>(points), 0) {
   if (!laws_ || laws_->cells() == 0) throw std::invalid_argument("CellLawSprings: no laws");
 }
 
 void CellLawSprings::evaluate(Eigen::Index p, double delta, double& force, double& slope) const {
-  laws_->force(cell_[static_cast<std::size_t>(p)], std::abs(delta), force, slope);
+  laws_->force(cell_[static_cast<std::size_t>(p)], std::abs(delta), force, slope, &hint_[static_cast<std::size_t>(p)]);
   force = std::copysign(force, delta);
 }
 
 double CellLawSprings::compression_of(Eigen::Index p, double y, double c, double) const {
-  return std::copysign(laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c), y);
+  // y = δ + c·F(δ) increases with δ, so its segments are δ's: one hint serves both.
+  return std::copysign(
+      laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c, &hint_[static_cast<std::size_t>(p)]), y);
 }
 
 double CellLawSprings::compression_at(Eigen::Index p, double force) const {
@@ -193,7 +206,7 @@ double CellLawSprings::compression_at(Eigen::Index p, double force) const {
 }
 
 double CellLawSprings::stored_energy(Eigen::Index p, double delta) const {
-  return laws_->stored_energy(cell_[static_cast<std::size_t>(p)], std::abs(delta));
+  return laws_->stored_energy(cell_[static_cast<std::size_t>(p)], std::abs(delta), &hint_[static_cast<std::size_t>(p)]);
 }
 
 }  // namespace rollnoise

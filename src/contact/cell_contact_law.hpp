@@ -54,14 +54,16 @@ class CellContactLaws {
     return {approach_.data() + cell * levels, static_cast<std::size_t>(levels)};
   }
 
-  // F(δ) and dF/dδ of cell c for δ ≥ 0.
-  void force(std::size_t cell, double delta, double& force, double& slope) const;
+  // F(δ) and dF/dδ of cell c for δ ≥ 0. `hint` (optional): the segment found last for this
+  // cell, tried first and updated (a contact step evaluates each point's law many times with
+  // nearby δ).
+  void force(std::size_t cell, double delta, double& force, double& slope, int* hint = nullptr) const;
   // δ ≥ 0 with F(δ) = force ≥ 0.
   double approach_at(std::size_t cell, double force) const;
   // ∫₀^δ F, δ ≥ 0.
-  double stored_energy(std::size_t cell, double delta) const;
+  double stored_energy(std::size_t cell, double delta, int* hint = nullptr) const;
   // δ ≥ 0 with δ + c·F(δ) = y ≥ 0.
-  double compression_of(std::size_t cell, double y, double c) const;
+  double compression_of(std::size_t cell, double y, double c, int* hint = nullptr) const;
 
  private:
   // The node i of cell c (0: the origin), its slope, and the segment of δ.
@@ -77,7 +79,7 @@ class CellContactLaws {
   }
   // The Fritsch–Carlson slope at node i from the nodes (at set()).
   double monotone_slope(std::size_t cell, int i) const noexcept;
-  int segment_of(std::size_t cell, double delta) const noexcept;
+  int segment_of(std::size_t cell, double delta, int* hint = nullptr) const noexcept;
   // δ on segment i (nodes i, i + 1) with w·δ + c·F(δ) = target (w, c ≥ 0, not both 0).
   double solve_on_segment(std::size_t cell, int i, double w, double c, double target) const;
 
@@ -94,7 +96,10 @@ class CellContactLaws {
 class CellLawSprings final : public PointSprings {
  public:
   CellLawSprings(std::shared_ptr<const CellContactLaws> laws, Eigen::Index points);
-  void assign(Eigen::Index point, std::size_t cell) { cell_[static_cast<std::size_t>(point)] = cell; }
+  void assign(Eigen::Index point, std::size_t cell) {
+    if (cell_[static_cast<std::size_t>(point)] != cell) hint_[static_cast<std::size_t>(point)] = 0;
+    cell_[static_cast<std::size_t>(point)] = cell;
+  }
 
   Eigen::Index size() const override { return static_cast<Eigen::Index>(cell_.size()); }
   void evaluate(Eigen::Index p, double delta, double& force, double& slope) const override;
@@ -105,6 +110,9 @@ class CellLawSprings final : public PointSprings {
  private:
   std::shared_ptr<const CellContactLaws> laws_;
   std::vector<std::size_t> cell_;
+  // Each point's last segment (CellContactLaws::force's hint): a cache of the lookups, not state
+  // that changes a result.
+  mutable std::vector<int> hint_;
 };
 
 }  // namespace rollnoise
