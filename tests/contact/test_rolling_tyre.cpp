@@ -12,39 +12,13 @@
 #include "greens/kropp_plate.hpp"
 #include "greens/tread_compliance.hpp"
 #include "rolling_test_roads.hpp"
+#include "rolling_test_tyre.hpp"
 
 namespace rollnoise {
 namespace {
 
-// A small belt, so that the direct engine's dense kernel stays small: 64 points around,
-// 4 across, a 16-cell window.
-PlateParameters small_plate(double loss_factor) {
-  PlateParameters p;
-  p.radius = 0.3;
-  p.width = 0.16;
-  p.mass_per_area = 10.0;
-  p.tension_x = 8e4;
-  p.tension_y = 4e4;
-  p.bending_x = 6.0;
-  p.bending_y = 3.0;
-  p.bending_xy = 3.0;
-  p.foundation_stiffness = 2.8e6;
-  p.loss_factor = loss_factor;
-  p.circumferential_modes = 32;
-  p.lateral_modes = 4;
-  return p;
-}
-
-TyreGrid small_grid() {
-  TyreGrid g;
-  g.radius = 0.3;
-  g.width = 0.16;
-  g.circumferential = 64;
-  g.lateral = 4;
-  g.window = 16;
-  return g;
-}
-
+using test::small_grid;
+using test::small_plate;
 using test::Bumps;
 using test::Flat;
 

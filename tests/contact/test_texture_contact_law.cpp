@@ -24,6 +24,7 @@
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
 #include "rolling_test_roads.hpp"
+#include "rolling_test_tyre.hpp"
 
 namespace rollnoise {
 namespace {
@@ -234,26 +235,8 @@ class TileRoad : public RoadSurface {
 };
 
 TEST(RollingTextureLaw, AVeryStiffLawGivesTheRigidCellsForces) {
-  PlateParameters p;
-  p.radius = 0.3;
-  p.width = 0.16;
-  p.mass_per_area = 10.0;
-  p.tension_x = 8e4;
-  p.tension_y = 4e4;
-  p.bending_x = 6.0;
-  p.bending_y = 3.0;
-  p.bending_xy = 3.0;
-  p.foundation_stiffness = 2.8e6;
-  p.loss_factor = 0.15;
-  p.circumferential_modes = 32;
-  p.lateral_modes = 4;
-  const KroppPlate plate(p);
-  TyreGrid grid;
-  grid.radius = 0.3;
-  grid.width = 0.16;
-  grid.circumferential = 64;
-  grid.lateral = 4;
-  grid.window = 16;
+  const KroppPlate plate(test::small_plate(0.15));
+  const TyreGrid grid = test::small_grid();
   const double speed = 20.0;
   const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd tread = winkler_compliance(grid.points(), grid.dx(), grid.dy(), 4e8);

@@ -23,6 +23,7 @@
 #include "contact/pmatrix_lcp.hpp"
 #include "contact/rolling_modes.hpp"
 #include "contact/tread_newton_contact.hpp"
+#include "rolling_test_tyre.hpp"
 #include "greens/kropp_plate.hpp"
 #include "rolling_test_roads.hpp"
 
@@ -145,26 +146,8 @@ TEST(TreadNewtonContact, ExponentOneIsTheLinearLcp) {
 
 // The rolling plate's G0 (symmetric part) on a 16 × 4 window, the road moving one cell a step.
 TEST(TreadNewtonContact, WindowProductsMatchKinsolStepByStep) {
-  PlateParameters plate_parameters;
-  plate_parameters.radius = 0.3;
-  plate_parameters.width = 0.16;
-  plate_parameters.mass_per_area = 10.0;
-  plate_parameters.tension_x = 8e4;
-  plate_parameters.tension_y = 4e4;
-  plate_parameters.bending_x = 6.0;
-  plate_parameters.bending_y = 3.0;
-  plate_parameters.bending_xy = 3.0;
-  plate_parameters.foundation_stiffness = 2.8e6;
-  plate_parameters.loss_factor = 0.1;
-  plate_parameters.circumferential_modes = 32;
-  plate_parameters.lateral_modes = 4;
-  const KroppPlate plate(plate_parameters);
-  TyreGrid grid;
-  grid.radius = 0.3;
-  grid.width = 0.16;
-  grid.circumferential = 64;
-  grid.lateral = 4;
-  grid.window = 16;
+  const KroppPlate plate(test::small_plate(0.1));
+  const TyreGrid grid = test::small_grid();
   const double speed = 22.2;
   const RollingModes rolling(plate, grid, grid.dx() / speed);
   const Eigen::MatrixXd g0 = rolling.sheared_lag(0);
