@@ -65,6 +65,16 @@ void CellContactLaws::set(std::size_t cell, double top, std::span<const double> 
   }
 }
 
+Eigen::VectorXd CellContactLaws::tops() const {
+  return Eigen::Map<const Eigen::VectorXd>(top_.data(), static_cast<Eigen::Index>(top_.size()));
+}
+
+Eigen::MatrixXd CellContactLaws::approach_table() const {
+  // approach_ is cell-major: a row-major cells × levels array.
+  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  return Eigen::Map<const RowMajor>(approach_.data(), static_cast<Eigen::Index>(cells()), levels).cast<double>();
+}
+
 double CellContactLaws::monotone_slope(std::size_t cell, int i) const noexcept {
   const auto secant = [&](int s) {
     return (node_force(s + 1) - node_force(s)) / (node_delta(cell, s + 1) - node_delta(cell, s));

@@ -53,6 +53,9 @@ class CellContactLaws {
   std::span<const float> approaches(std::size_t cell) const noexcept {
     return {approach_.data() + cell * levels, static_cast<std::size_t>(levels)};
   }
+  // Every cell's first-touch height, and δ_sub as cells × levels: what a file of the laws holds.
+  Eigen::VectorXd tops() const;
+  Eigen::MatrixXd approach_table() const;
 
   // F(δ) and dF/dδ of cell c for δ ≥ 0. `hint` (optional): the segment found last for this
   // cell, tried first and updated (a contact step evaluates each point's law many times with

@@ -19,12 +19,7 @@ constexpr double kFormat = 1.0;
 
 }  // namespace
 
-std::string contact_law_cache_name(std::uint64_t digest) {
-  static constexpr char digits[] = "0123456789abcdef";
-  std::string hex(16, '0');
-  for (int i = 0; i < 16; ++i) hex[static_cast<std::size_t>(15 - i)] = digits[(digest >> (4 * i)) & 0xf];
-  return "contact-laws-" + hex + ".h5";
-}
+std::string contact_law_cache_name(const std::string& digest_hex) { return "contact-laws-" + digest_hex + ".h5"; }
 
 std::shared_ptr<CellContactLaws> read_contact_law_cache(const std::filesystem::path& path, std::size_t cells,
                                                         double force_cap, double minimum_compliance,
@@ -59,16 +54,9 @@ void write_contact_law_cache(const std::filesystem::path& path, const CellContac
     h5.attribute("/", "format", kFormat);
     h5.attribute("/", "force_cap_N", laws.force_cap());
     h5.attribute("/", "minimum_compliance_m_per_N", laws.minimum_compliance());
-    const auto cells = static_cast<Eigen::Index>(laws.cells());
-    Eigen::VectorXd top(cells);
-    Eigen::MatrixXd sub(cells, CellContactLaws::levels);
-    for (Eigen::Index c = 0; c < cells; ++c) {
-      top(c) = laws.top(static_cast<std::size_t>(c));
-      const auto approaches = laws.approaches(static_cast<std::size_t>(c));
-      for (int k = 0; k < CellContactLaws::levels; ++k) sub(c, k) = static_cast<double>(approaches[static_cast<std::size_t>(k)]);
-    }
-    h5.write("top_m", top, "m", "each cell's first-touch height");
-    h5.write("sub_cell_approach_m", sub, "m", "each cell's approach below the cell at the table's force levels");
+    h5.write("top_m", laws.tops(), "m", "each cell's first-touch height");
+    h5.write("sub_cell_approach_m", laws.approach_table(), "m",
+             "each cell's approach below the cell at the table's force levels");
     h5.close();
   }
   temporary.rename_to(path);

@@ -15,8 +15,8 @@
 
 namespace rollnoise {
 
-// "contact-laws-<16 hex digits>.h5" for a digest of the laws' inputs.
-std::string contact_law_cache_name(std::uint64_t digest);
+// "contact-laws-<hex>.h5" for the hex digest of the laws' inputs (texture_law_digest).
+std::string contact_law_cache_name(const std::string& digest_hex);
 
 // The laws of entry `path`, or empty when it is missing; `warning` says why an entry that exists
 // could not be used (damaged, foreign: another table form or count of cells).

@@ -89,8 +89,8 @@ CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& gr
   return out;
 }
 
-std::uint64_t texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
-                                 const TreadRubber& rubber) {
+std::string texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
+                               const TreadRubber& rubber) {
   FnvDigest d;
   d.text("texture contact laws");
   d.unsigned_integer(CellContactLaws::levels);
@@ -98,7 +98,7 @@ std::uint64_t texture_law_digest(const CellHeights& heights, const ContactCellGr
   for (const std::size_t v : {pixels.nx, pixels.ny, pixels.samples, grid.positions, grid.lines.size()}) d.unsigned_integer(v);
   for (const double y : grid.lines) d.real(y);
   d.words(reinterpret_cast<const char*>(heights.values.data()), heights.values.size() * sizeof(float));
-  return d.value();
+  return d.hex();
 }
 
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber) {

@@ -60,8 +60,9 @@ struct CellHeights {
 CellHeights read_cell_heights(const RoadSurface& road, const ContactCellGrid& grid, CellPixels pixels);
 // A digest of everything the laws are made from: every cell's pixel heights, the layout, the
 // rubber and the table's form (contact_law_cache.hpp).
-std::uint64_t texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
-                                 const TreadRubber& rubber);
+// 16 hex digits (FnvDigest::hex).
+std::string texture_law_digest(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
+                               const TreadRubber& rubber);
 
 // Visits every cell's exact law (halfspace_load_path.hpp) up to `force_cap`, on `threads`
 // threads: visit(cell, path, top) with cell = m·lines + j and the cell's first-touch height,

@@ -135,21 +135,13 @@ void write_surface_contact_law(const std::filesystem::path& folder, const Surfac
   h5.write("mean/force_p10_N", vec(law.force_p10_n), "N", "10th percentile of the force over the cells");
   h5.write("mean/force_p90_N", vec(law.force_p90_n), "N", "90th percentile of the force over the cells");
   h5.group("cells");
-  const auto cells = static_cast<Eigen::Index>(laws.cells());
-  Eigen::VectorXd top(cells);
-  Eigen::MatrixXd sub(cells, CellContactLaws::levels);
-  for (Eigen::Index c = 0; c < cells; ++c) {
-    top(c) = laws.top(static_cast<std::size_t>(c));
-    const auto approaches = laws.approaches(static_cast<std::size_t>(c));
-    for (int k = 0; k < CellContactLaws::levels; ++k) sub(c, k) = static_cast<double>(approaches[static_cast<std::size_t>(k)]);
-  }
   Eigen::VectorXd levels(CellContactLaws::levels);
   for (int k = 0; k < CellContactLaws::levels; ++k) levels(k) = laws.force_level(k);
   h5.write("cells/x_m", vec(law.cell_x_m), "m", "cell centre along the road");
   h5.write("cells/y_m", vec(law.cell_y_m), "m", "cell centre across the road");
-  h5.write("cells/first_touch_height_m", top, "m", "the cell's highest pixel, where it meets the tread first");
+  h5.write("cells/first_touch_height_m", laws.tops(), "m", "the cell's highest pixel, where it meets the tread first");
   h5.write("cells/force_levels_N", levels, "N", "the forces of each cell's table");
-  h5.write("cells/sub_cell_approach_m", sub, "m",
+  h5.write("cells/sub_cell_approach_m", laws.approach_table(), "m",
            "per cell and force level: the approach the texture adds in series with the tyre, approach - c_punch * force");
   h5.close();
 }
