@@ -9,12 +9,7 @@
 # CALLGRIND=1 adds the instruction counts of the contact step (several minutes under valgrind).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [[ -z ${ROLLNOISE_EXE:-} ]]; then
-  bash tools/setup.sh >/dev/null
-  cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
-  cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
-fi
-exe=${ROLLNOISE_EXE:-build-bench/tools/rollnoise/rollnoise}
+source bench/bench_binary.sh
 case=${1:-models/cases/plate_rough_80kmh.toml}
 duration=${2:-1.0}
 out=$(mktemp -d)

@@ -9,12 +9,7 @@
 # ROLLNOISE_EXE picks the binary (default: the Release build without assertions, build-bench/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [[ -z ${ROLLNOISE_EXE:-} ]]; then
-  bash tools/setup.sh >/dev/null
-  cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=OFF -DROLLNOISE_BUILD_TESTS=OFF -DROLLNOISE_PYTHON=OFF >/dev/null
-  cmake --build build-bench -j "$(nproc)" --target rollnoise >/dev/null
-fi
-exe=${ROLLNOISE_EXE:-build-bench/tools/rollnoise/rollnoise}
+source bench/bench_binary.sh
 command -v valgrind >/dev/null || { echo "valgrind is not installed (apt-get install valgrind)" >&2; exit 1; }
 case=${1:-models/cases/plate_rough_80kmh.toml}
 duration=${2:-0.003}
