@@ -101,6 +101,16 @@ std::string texture_law_digest(const CellHeights& heights, const ContactCellGrid
   return d.hex();
 }
 
+void set_law_from_path(CellContactLaws& laws, std::size_t cell, const std::vector<LoadPathPoint>& path, double top,
+                       double punch_compliance) {
+  std::array<double, CellContactLaws::levels> approaches{};
+  for (int k = 0; k < CellContactLaws::levels; ++k) {
+    const double f = laws.force_level(k);
+    approaches[static_cast<std::size_t>(k)] = std::max(0.0, approach_at_force(path, f) - punch_compliance * f);
+  }
+  laws.set(cell, top, approaches);
+}
+
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber) {
   const HalfspaceLoadPath probe(pixels.nx, pixels.ny, grid.dx / static_cast<double>(pixels.nx),
                                 grid.dy / static_cast<double>(pixels.ny), rubber.youngs_modulus, rubber.poisson_ratio);
@@ -167,12 +177,7 @@ std::shared_ptr<CellContactLaws> make_texture_contact_laws(const RoadSurface& ro
   for_each_cell_path(
       heights, grid, pixels, rubber, cap, threads,
       [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
-        std::array<double, CellContactLaws::levels> approaches{};
-        for (int k = 0; k < CellContactLaws::levels; ++k) {
-          const double f = laws->force_level(k);
-          approaches[static_cast<std::size_t>(k)] = std::max(0.0, approach_at_force(path, f) - punch * f);
-        }
-        laws->set(cell, top, approaches);
+        set_law_from_path(*laws, cell, path, top, punch);
       },
       progress);
   if (!entry.empty()) {

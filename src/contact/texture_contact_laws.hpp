@@ -71,6 +71,11 @@ using CellPathVisitor = std::function<void(std::size_t cell, const std::vector<L
 void for_each_cell_path(const CellHeights& heights, const ContactCellGrid& grid, CellPixels pixels,
                         const TreadRubber& rubber, double force_cap, int threads, const CellPathVisitor& visit,
                         ProgressReporter* progress = nullptr);
+// Sets cell `cell` of `laws` from its exact path: δ_sub = δ_hs − c_punch·F at each force level
+// (cell_contact_law.hpp), and its first-touch height `top`.
+void set_law_from_path(CellContactLaws& laws, std::size_t cell, const std::vector<LoadPathPoint>& path, double top,
+                       double punch_compliance);
+
 // The compliance of a flat punch of the cell's size on those pixels, 1/(1ᵀK⁻¹1), m/N.
 double cell_punch_compliance(const ContactCellGrid& grid, CellPixels pixels, const TreadRubber& rubber);
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <string>
 
 #include "contact/halfspace_load_path.hpp"
@@ -68,13 +67,7 @@ SurfaceContactLaw surface_contact_law(const RoadSurface& road, double length, do
   std::vector<int> contacts(cells * kApproaches);
   for_each_cell_path(read_cell_heights(road, grid, out.pixels), grid, out.pixels, options.rubber, cap, options.threads,
                      [&](std::size_t cell, const std::vector<LoadPathPoint>& path, double top) {
-                       std::array<double, CellContactLaws::levels> approaches{};
-                       for (int k = 0; k < CellContactLaws::levels; ++k) {
-                         const double f = out.laws->force_level(k);
-                         approaches[static_cast<std::size_t>(k)] =
-                             std::max(0.0, approach_at_force(path, f) - out.punch_compliance * f);
-                       }
-                       out.laws->set(cell, top, approaches);
+                       set_law_from_path(*out.laws, cell, path, top, out.punch_compliance);
                        for (int a = 0; a < kApproaches; ++a) {
                          const PathState s = state_at_approach(path, grid_approach(a));
                          force[cell * kApproaches + static_cast<std::size_t>(a)] = s.force;
