@@ -104,7 +104,16 @@ int CellContactLaws::segment_of(std::size_t cell, double delta, int* hint) const
 }
 
 void CellContactLaws::force(std::size_t cell, double delta, double& force, double& slope, int* hint) const {
-  const int i = segment_of(cell, delta, hint);
+  if (delta == 0.0) {  // most points of a step's window, out of contact: the cubic at t = 0 of segment 0
+    force = 0.0;
+    slope = node_slope(cell, 0);
+    return;
+  }
+  force_on_segment(cell, segment_of(cell, delta, hint), delta, force, slope);
+}
+
+void CellContactLaws::force_on_segment(std::size_t cell, int i, double delta, double& force,
+                                       double& slope) const noexcept {
   const double d0 = node_delta(cell, i), f0 = node_force(i);
   if (i == levels) {
     slope = node_slope(cell, levels);
@@ -118,15 +127,18 @@ void CellContactLaws::force(std::size_t cell, double delta, double& force, doubl
   slope = ((6 * t2 - 6 * t) * f0 + (-6 * t2 + 6 * t) * f1) / h + (3 * t2 - 4 * t + 1) * m0 + (3 * t2 - 2 * t) * m1;
 }
 
-double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, double c, double target) const {
+double CellContactLaws::solve_on_segment(std::size_t cell, int i, double w, double c, double target,
+                                         double guess) const {
   // The segment's cubic in t = (δ − d0)/h, fixed once: Newton in t, safeguarded by the bracket.
   const double d0 = node_delta(cell, i), h = node_delta(cell, i + 1) - d0;
   const double f0 = node_force(i), f1 = node_force(i + 1);
   const double hm0 = h * node_slope(cell, i), hm1 = h * node_slope(cell, i + 1);
-  // Start where the chord between the segment's ends meets the target (g is increasing and
-  // nearly linear on a segment): Newton then takes two or three steps.
+  // Start at the guess when it lies on the segment (a contact step's Newton predicts δ to second
+  // order: one or two steps remain), else where the chord between the segment's ends meets the
+  // target (g is increasing and nearly linear on a segment): Newton then takes two or three.
   const double g0 = w * d0 + c * f0 - target, g1 = w * (d0 + h) + c * f1 - target;
   double lo = 0.0, hi = 1.0, t = g1 > g0 ? std::clamp(-g0 / (g1 - g0), 0.0, 1.0) : 0.5;
+  if (const double from_guess = (guess - d0) / h; from_guess > 0.0 && from_guess < 1.0) t = from_guess;
   // δ = d0 + h·t is known to its round-off, eps·δ: in t, eps·(d0 + h)/h, which is far above eps
   // on a short segment far from the origin (stopping at eps in t would bisect to the end).
   const double resolution = 4.0 * kEps * (d0 + h) / h;
@@ -156,27 +168,41 @@ double CellContactLaws::approach_at(std::size_t cell, double f) const {
   return solve_on_segment(cell, i, 0.0, 1.0, f);
 }
 
-double CellContactLaws::compression_of(std::size_t cell, double y, double c, int* hint) const {
-  if (!(y > 0.0)) return 0.0;
+int CellContactLaws::compression_segment(std::size_t cell, double y, double c, int* hint) const noexcept {
   // The node i with δ_i + c·F_i ≤ y < the next one's (increasing in i); the hint's first.
   const auto below = [&](int i) { return node_delta(cell, i) + c * node_force(i) <= y; };
-  int lo = 0;
-  if (hint && *hint >= 0 && *hint <= levels && below(*hint) && (*hint == levels || !below(*hint + 1))) {
-    lo = *hint;
-  } else {
-    int hi = levels + 1;
-    while (hi - lo > 1) {
-      const int mid = (lo + hi) / 2;
-      if (below(mid)) lo = mid;
-      else hi = mid;
-    }
-    if (hint) *hint = lo;
+  if (hint && *hint >= 0 && *hint <= levels && below(*hint) && (*hint == levels || !below(*hint + 1))) return *hint;
+  int lo = 0, hi = levels + 1;
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    if (below(mid)) lo = mid;
+    else hi = mid;
   }
-  if (lo == levels) {
+  if (hint) *hint = lo;
+  return lo;
+}
+
+double CellContactLaws::compression_of(std::size_t cell, double y, double c, int* hint, double guess) const {
+  double force = 0.0, slope = 0.0;
+  return compression_of(cell, y, c, hint, guess, force, slope);
+}
+
+double CellContactLaws::compression_of(std::size_t cell, double y, double c, int* hint, double guess, double& force,
+                                       double& slope) const {
+  const int i = y > 0.0 ? compression_segment(cell, y, c, hint) : 0;
+  double delta = 0.0;
+  if (!(y > 0.0)) {
+    delta = 0.0;
+  } else if (i == levels) {
     const double d = node_delta(cell, levels), s = node_slope(cell, levels);
-    return d + (y - d - c * node_force(levels)) / (1.0 + c * s);
+    delta = d + (y - d - c * node_force(levels)) / (1.0 + c * s);
+  } else {
+    delta = solve_on_segment(cell, i, 1.0, c, y, guess);
   }
-  return solve_on_segment(cell, lo, 1.0, c, y);
+  // δ may land a round-off outside segment i: F there is the segment's cubic continued, which
+  // differs from the neighbour's by far less than the solve's own tolerance.
+  force_on_segment(cell, i, delta, force, slope);
+  return delta;
 }
 
 double CellContactLaws::stored_energy(std::size_t cell, double delta, int* hint) const {
@@ -205,10 +231,19 @@ void CellLawSprings::evaluate(Eigen::Index p, double delta, double& force, doubl
   force = std::copysign(force, delta);
 }
 
-double CellLawSprings::compression_of(Eigen::Index p, double y, double c, double) const {
+double CellLawSprings::compression_of(Eigen::Index p, double y, double c, double guess) const {
   // y = δ + c·F(δ) increases with δ, so its segments are δ's: one hint serves both.
-  return std::copysign(
-      laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c, &hint_[static_cast<std::size_t>(p)]), y);
+  return std::copysign(laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c,
+                                             &hint_[static_cast<std::size_t>(p)], std::abs(guess)),
+                       y);
+}
+
+void CellLawSprings::compress(Eigen::Index p, double y, double c, double guess, double& delta, double& force,
+                              double& slope) const {
+  const double magnitude = laws_->compression_of(cell_[static_cast<std::size_t>(p)], std::abs(y), c,
+                                                 &hint_[static_cast<std::size_t>(p)], std::abs(guess), force, slope);
+  delta = std::copysign(magnitude, y);
+  force = std::copysign(force, delta);
 }
 
 double CellLawSprings::compression_at(Eigen::Index p, double force) const {

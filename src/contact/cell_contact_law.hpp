@@ -65,8 +65,12 @@ class CellContactLaws {
   double approach_at(std::size_t cell, double force) const;
   // ∫₀^δ F, δ ≥ 0.
   double stored_energy(std::size_t cell, double delta, int* hint = nullptr) const;
-  // δ ≥ 0 with δ + c·F(δ) = y ≥ 0.
-  double compression_of(std::size_t cell, double y, double c, int* hint = nullptr) const;
+  // δ ≥ 0 with δ + c·F(δ) = y ≥ 0; `guess` (optional, ≥ 0): a δ near the root, where the root
+  // search starts if it lies on the root's segment.
+  double compression_of(std::size_t cell, double y, double c, int* hint = nullptr, double guess = -1.0) const;
+  // The same, and F(δ) and dF/dδ there (as force()) from the segment the search ended on.
+  double compression_of(std::size_t cell, double y, double c, int* hint, double guess, double& force,
+                        double& slope) const;
 
  private:
   // The node i of cell c (0: the origin), its slope, and the segment of δ.
@@ -83,8 +87,13 @@ class CellContactLaws {
   // The Fritsch–Carlson slope at node i from the nodes (at set()).
   double monotone_slope(std::size_t cell, int i) const noexcept;
   int segment_of(std::size_t cell, double delta, int* hint = nullptr) const noexcept;
-  // δ on segment i (nodes i, i + 1) with w·δ + c·F(δ) = target (w, c ≥ 0, not both 0).
-  double solve_on_segment(std::size_t cell, int i, double w, double c, double target) const;
+  // F(δ) and dF/dδ on segment i (levels: the line beyond the last node).
+  void force_on_segment(std::size_t cell, int i, double delta, double& force, double& slope) const noexcept;
+  // The segment i with node δ_i + c·F_i ≤ y < the next one's.
+  int compression_segment(std::size_t cell, double y, double c, int* hint) const noexcept;
+  // δ on segment i (nodes i, i + 1) with w·δ + c·F(δ) = target (w, c ≥ 0, not both 0), the
+  // search started at `guess` if it lies inside the segment.
+  double solve_on_segment(std::size_t cell, int i, double w, double c, double target, double guess = -1.0) const;
 
   double cap_, minimum_compliance_;
   std::vector<double> forces_;
@@ -107,6 +116,8 @@ class CellLawSprings final : public PointSprings {
   Eigen::Index size() const override { return static_cast<Eigen::Index>(cell_.size()); }
   void evaluate(Eigen::Index p, double delta, double& force, double& slope) const override;
   double compression_of(Eigen::Index p, double y, double c, double guess) const override;
+  void compress(Eigen::Index p, double y, double c, double guess, double& delta, double& force,
+                double& slope) const override;
   double compression_at(Eigen::Index p, double force) const override;
   double stored_energy(Eigen::Index p, double delta) const override;
 

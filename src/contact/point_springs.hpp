@@ -18,6 +18,13 @@ class PointSprings {
   // δ with δ + c·F_p(δ) = y (c = A_pp > 0, the structure's own compliance at p), odd in y.
   // `guess`: a δ near the root (0: none).
   virtual double compression_of(Eigen::Index p, double y, double c, double guess) const = 0;
+  // compression_of and then evaluate at the δ found; a law that knows where its root search
+  // ended evaluates there without searching again.
+  virtual void compress(Eigen::Index p, double y, double c, double guess, double& delta, double& force,
+                        double& slope) const {
+    delta = compression_of(p, y, c, guess);
+    evaluate(p, delta, force, slope);
+  }
   // δ ≥ 0 with F_p(δ) = force ≥ 0.
   virtual double compression_at(Eigen::Index p, double force) const = 0;
   // ∫₀^|δ| F_p: the energy the spring stores (even in δ). The solver's energy uses the

@@ -103,12 +103,7 @@ void TreadNewtonContact::evaluate_gap(const Eigen::VectorXd& q) {
 }
 
 double TreadNewtonContact::merit(const Eigen::VectorXd& q) const {
-  if (!symmetric_) {
-    double residual = 0.0;
-    for (Eigen::Index p = 0; p < q.size(); ++p)
-      if (active_[static_cast<std::size_t>(p)]) residual = std::max(residual, std::abs(gap_(p)));
-    return residual;
-  }
+  if (!symmetric_) return set_residual();
   // E = ½FᵀAF + qᵀF + Σ ∫₀^F δ with A·F = gap − q − δ and ∫₀^F δ = F·δ − ∫₀^δ F: no product
   // beyond the gap's.
   double complementary = 0.0;
@@ -129,6 +124,24 @@ double TreadNewtonContact::merit_noise(const Eigen::VectorXd& q) const {
   for (Eigen::Index p = 0; p < q.size(); ++p)
     sum += std::abs(force_(p)) * (std::abs(gap_(p)) + std::abs(q(p)) + std::abs(delta_(p)));
   return 64.0 * kEps * sum;
+}
+
+double TreadNewtonContact::set_residual() const {
+  double residual = 0.0;
+  for (Eigen::Index p = 0; p < gap_.size(); ++p)
+    if (active_[static_cast<std::size_t>(p)]) residual = std::max(residual, std::abs(gap_(p)));
+  return residual;
+}
+
+double TreadNewtonContact::merit_before_step(const Eigen::VectorXd& q) {
+  // Back to the compressions before the step (previous_ on the contact set), then the merit.
+  for (Eigen::Index p = 0; p < q.size(); ++p) {
+    if (!active_[static_cast<std::size_t>(p)]) continue;
+    delta_(p) = previous_(p);
+    evaluate_spring(p);
+  }
+  evaluate_gap(q);
+  return merit(q);
 }
 
 void TreadNewtonContact::release(Eigen::Index p) {
@@ -309,8 +322,7 @@ void TreadNewtonContact::seed_joining_points(const Eigen::VectorXd& q) {
   for (Eigen::Index p = 0; p < size; ++p)
     if (active_[static_cast<std::size_t>(p)] && delta_(p) == 0.0 && gap_(p) < 0.0) moved_.push_back(p);
   for (const Eigen::Index p : moved_) {  // all from the same gaps, then the gaps updated
-    delta_(p) = compression_of(-gap_(p), p, 0.0);
-    evaluate_spring(p);
+    springs_->compress(p, -gap_(p), a_diagonal_(p), 0.0, delta_(p), force_(p), slope_(p));
   }
   if (moved_.size() > kColumnUpdates) {
     evaluate_gap(q);
@@ -353,7 +365,8 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
                                " iterations on a contact set (max |gap| = " + sci(residual) + " m, tolerance " +
                                sci(tolerance) + " m)");
     ++iterations_;
-    const double start = merit(q);
+    // The merit before the step, computed only if the full step does not settle it (below).
+    std::optional<double> start;
     // Inexact Newton: (3) to a fraction of the residual that falls with it (quadratic rate).
     newton_system(std::max(0.5 * tolerance, residual * std::min(kForcing, residual / scale)));
     // The step in y = δ + A_pp·F(δ): Δy = Δδ + A_pp·x with Δδ = C·x on the points of (3), and
@@ -369,15 +382,30 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
     // step is halved along the path y + α·Δy. Without (2) (A not symmetric) max_S |gap| must
     // fall, by the Armijo fraction 1e-4·α. Near the solution the full step is taken; far from
     // it (a cold start, where the entering points take their own compressions and together
-    // overshoot) this keeps Newton from wandering.
-    for (double alpha = 1.0;; alpha *= 0.5) {
+    // overshoot) this keeps Newton from wandering. A full step that halves max_S |gap| is taken
+    // without the merit: the residual then falls geometrically, which is all the line search
+    // guards, and the energy's per-point integrals are the dearest part of a trial.
+    const auto take_step = [&](double alpha) {
       for (Eigen::Index p = 0; p < size; ++p) {
         if (!active_[static_cast<std::size_t>(p)]) continue;
-        delta_(p) = compression_of(coordinate_(p) + alpha * step_(p), p, previous_(p));
-        evaluate_spring(p);
+        // Newton's own prediction of δ (Δδ = C·x, or the whole step for a point left out of
+        // (3)) starts the scalar root search a second-order distance from its root.
+        const double predicted = previous_(p) + alpha * (mask_(p) != 0.0 ? compliance_(p) * x_(p) : step_(p));
+        springs_->compress(p, coordinate_(p) + alpha * step_(p), a_diagonal_(p), predicted, delta_(p), force_(p),
+                           slope_(p));
       }
       evaluate_gap(q);
-      if (merit(q) <= (symmetric_ ? start : (1.0 - 1e-4 * alpha) * start) + merit_noise(q)) break;
+    };
+    for (double alpha = 1.0;; alpha *= 0.5) {
+      take_step(alpha);
+      if (alpha == 1.0 && set_residual() <= 0.5 * residual) break;
+      if (!start && !symmetric_) {
+        start = residual;  // max_S |gap| before the step: the merit without (2)
+      } else if (!start) {
+        start = merit_before_step(q);
+        take_step(alpha);
+      }
+      if (merit(q) <= (symmetric_ ? *start : (1.0 - 1e-4 * alpha) * *start) + merit_noise(q)) break;
       if (alpha < kSmallestStep)
         throw std::runtime_error("TreadNewtonContact: no decrease of the merit along the Newton step (max |gap| = " +
                                  sci(residual) + " m, tolerance " + sci(tolerance) + " m)");

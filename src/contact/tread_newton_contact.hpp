@@ -42,7 +42,9 @@
 // (δ may go negative there, with the odd extension F(−δ) = −F(δ)) a step that raises E
 // (symmetric A) or max_S |gap| (otherwise) beyond round-off is halved along y + α·Δy: from a
 // cold start the entering points, each at its own compression, together overshoot, and Newton
-// would otherwise wander.
+// would otherwise wander. A full step that halves max_S |gap| is taken without evaluating E
+// (Newton's usual case near the solution, and E's per-point integrals are a trial's dearest
+// part); the scalar inversions start from Newton's own prediction of each δ.
 //
 // Each solve starts from the last one's compressions (or those that warm_start() or relabel()
 // set), S from the points in contact there and those that penetrate under their forces: between
@@ -106,10 +108,6 @@ class TreadNewtonContact {
   void evaluate_spring(Eigen::Index p) { springs_->evaluate(p, delta_(p), force_(p), slope_(p)); }
   // gap_ = q + A·force_ + delta_.
   void evaluate_gap(const Eigen::VectorXd& q);
-  // δ with δ + A_pp·F_p(δ) = y, odd in y; `guess` starts the root search near it.
-  double compression_of(double y, Eigen::Index p, double guess) const {
-    return springs_->compression_of(p, y, a_diagonal_(p), guess);
-  }
   // How far a point of the contact set is pulled into tension: y_p = δ_p + A_pp·F_p, the gap it
   // would open if released (δ_p alone understates it for a stiff spring, whose small negative δ
   // is a large tensile force).
@@ -120,6 +118,10 @@ class TreadNewtonContact {
   // for a symmetric A, else max_S |gap|; and its round-off level.
   double merit(const Eigen::VectorXd& q) const;
   double merit_noise(const Eigen::VectorXd& q) const;
+  // max_S |gap|.
+  double set_residual() const;
+  // The merit at the compressions before the Newton step (previous_), which it restores.
+  double merit_before_step(const Eigen::VectorXd& q);
   // Points that join the contact set start at their own compression (keeping gap_).
   void seed_joining_points(const Eigen::VectorXd& q);
   // Newton on the contact set active_ (gap = 0 there, δ = 0 elsewhere) to `tolerance` (m), or
