@@ -27,9 +27,11 @@
 // (1992) 631–644; steady rolling), with the products A·x by FFT on the window
 // (window_convolution.hpp) as for the linear tread. Inexactly while the residual is large (the
 // forcing term of inexact Newton, Eisenstat & Walker, SIAM J. Sci. Comput. 17 (1996) 16–32),
-// to the final tolerance at the end. A point whose sign is violated by far more than the
-// residual can change is exchanged without converging the set first (a semismooth Newton step
-// on min(δ, gap), taken only where its outcome is certain).
+// to the final tolerance at the end. A point whose sign is violated by more than the residual
+// is exchanged without converging the set first (a semismooth Newton step on min(δ, gap), the
+// primal–dual active set strategy of Hintermüller, Ito & Kunisch, SIAM J. Optim. 13 (2002)
+// 865–888): an exchange that proves wrong is undone in a later round, and only a converged set
+// passes the stopping test.
 //
 // dδ/dF = ∞ at F = 0 for n > 1: a point that enters the contact (δ_p = 0) has no force in the
 // linearisation (dF/dδ = 0), so it is left out of (3) and its step follows from its own row,
