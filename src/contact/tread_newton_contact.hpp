@@ -114,6 +114,8 @@ class TreadNewtonContact {
   // would open if released (δ_p alone understates it for a stiff spring, whose small negative δ
   // is a large tensile force).
   double pull(Eigen::Index p) const { return delta_(p) + a_diagonal_(p) * force_(p); }
+  // How many points' columns are cheaper than one product A·F for the whole gap.
+  std::size_t column_updates() const noexcept;
   // Sets δ_p = 0 (and F_p = 0) at point p, keeping gap_ = q + A·F + δ.
   void release(Eigen::Index p);
   // What the line search must not raise: the energy (2) at the current forces (from the gap)
