@@ -7,12 +7,12 @@
 # energy budget (budget.csv).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh
+bash tools/setup.sh rollnoise   # the program only: the tests are built by tools/test.sh
 
 out=out/demo
 mkdir -p "$out"
 
-# Calibration (issue 5): the tyre model fitted to the synthetic example mobilities in
+# Calibration: the tyre model fitted to the synthetic example mobilities in
 # data/mobility, giving a model file any tyre case can roll with (--set tyre.file=...). It runs
 # beside the cases below, whose contact loops leave one of two cores idle; its messages follow
 # theirs.
@@ -27,11 +27,11 @@ for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
   name=$(basename "$case" .toml)
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
-# The seed's two-layer tyre (issue 11) on the smooth road: the first run tabulates its modes and
+# The seed's two-layer tyre on the smooth road: the first run tabulates its modes and
 # fits poles to them (about 16 s on 2 cores; cached for the next runs).
 build/tools/rollnoise/rollnoise simulate models/cases/two_layer_smooth_80kmh.toml --out "$out/two_layer_smooth_80kmh"
 
-# Road surfaces (issue 9): the dense asphalt the rough case rolls on, and a measured chip-seal
+# Road surfaces: the dense asphalt the rough case rolls on, and a measured chip-seal
 # laser profile, each analysed as a road engineer would (MPD, texture spectrum).
 build/tools/rollnoise/rollnoise road models/surfaces/dac11.toml --out "$out/road_dac11"
 build/tools/rollnoise/rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat --out "$out/road_captif"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing (Debian 12 packages), then configures and builds rollnoise in
 # build/ (Release with assertions on). Used by tools/demo.sh and tools/test.sh.
+#   bash tools/setup.sh [TARGET ...]   only these targets (the demo: rollnoise), else all
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,4 +31,6 @@ fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLNOISE_ASSERTIONS=ON -DROLLNOISE_WERROR=ON
-cmake --build build -j "$jobs"
+targets=()
+if (($#)); then targets=(--target "$@"); fi
+cmake --build build -j "$jobs" "${targets[@]}"

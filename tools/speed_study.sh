@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The CPX level against speed (issue 4): the rough-road tyre case at 50, 80 and 100 km/h, its
+# The CPX level against speed: the rough-road tyre case at 50, 80 and 100 km/h, its
 # LAeq at the CPX microphones, and the slope in dB per decade of speed, fitted by gnuplot.
 # Writes out/speed_study/{speed_study.csv, speed_study.gp, speed_study.png} and one run folder
 # per speed. Needs a built tree (bash tools/setup.sh).
 #
-# Every speed now carries the bands up to 5 kHz (issue 10 §3: sub-steps per cell). The levels
+# Every speed now carries the bands up to 5 kHz (sub-steps per cell). The levels
 # are also given over the bands up to 1.6 kHz: above about 0.5·V/Δx (1.8 kHz at 50 km/h, with
 # Δx the 3.9 mm grid spacing around the tyre) the bands carry the cell-passing artefact of the
 # fixed contact points (docs/physics/contact.md, "The band up to 5 kHz"), so those are the bands all three speeds

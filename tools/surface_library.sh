@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The surface library at a glance (issue 9): runs `rollnoise road` on every surface of
+# The surface library at a glance: runs `rollnoise road` on every surface of
 # models/surfaces/ and on the measured CAPTIF profiles (the chip seal's two longitudinal records and
 # the fine asphalt's nine transverse lines), and writes
 # out/surface_library/{library.csv, texture_spectra.csv, texture_spectra.gp, texture_spectra.png}:

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The two tyre models side by side (issue 11): the Kropp plate with its Winkler tread and the
+# The two tyre models side by side: the Kropp plate with its Winkler tread and the
 # seed's two-layer elastic tyre, the same 205/55 R16 at 80 km/h on the same road (dac11) under the
 # same CPX load, 0.2 s each. Writes docs/tyre_models/: models.csv (the headline numbers), the
 # CPX rear third-octave spectra of both (cpx_spectra.csv/.gp/.png), their point mobilities

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Validation against published measurements (issue 10 §4): reruns the computed side of the table
+# Validation against published measurements: reruns the computed side of the table
 # in docs/validation.md. The 205/55 R16 tyre case (models/cases/plate_rough_80kmh.toml, 0.2 s)
 # rolls on each library surface at 50 and 80 km/h; the CPX level is the energy mean of the two
 # CPX microphones (cpx_front, cpx_rear), as ISO 11819-2 averages its microphones.
