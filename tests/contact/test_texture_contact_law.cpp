@@ -68,6 +68,14 @@ TEST(CellContactLaws, InterpolationIsMonotoneAndItsInversesAgree) {
     EXPECT_NEAR(laws.approach_at(0, f), delta, 1e-10 * delta);
     const double c = 3e-5;
     EXPECT_NEAR(laws.compression_of(0, delta + c * f, c), delta, 1e-10 * delta);
+    // The same from a guess near the root (a contact step's prediction), and F, dF/dδ from the
+    // segment the search ended on equal force() there.
+    double fused_force = 0.0, fused_slope = 0.0;
+    int hint = 0;
+    const double fused = laws.compression_of(0, delta + c * f, c, &hint, 1.001 * delta, fused_force, fused_slope);
+    EXPECT_NEAR(fused, delta, 1e-10 * delta);
+    EXPECT_NEAR(fused_force, f, 1e-9 * f);
+    EXPECT_NEAR(fused_slope, slope, 1e-6 * slope);
     // The energy against a separate integration (Simpson, 400 intervals).
     if (delta > 1e-6 && delta < 1e-6 * 1.06) {
       double sum = 0.0;
