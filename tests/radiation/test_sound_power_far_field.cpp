@@ -19,9 +19,9 @@
 //    edges against Butterworth band filters, and the power interpolated between anchors against
 //    the interpolated transfer (tyre_radiation.hpp). Measured within 0.31 dB from 315 Hz to
 //    1.6 kHz; 0.5 dB asserted. The untapered record's power counted the burst and was 1.8–6.2 dB
-//    above the microphones. (At 250 Hz the power is 0.9–1.1 dB above them: a power rising about
-//    as f⁴ is interpolated linearly over the 100 Hz between the anchors at 200 and 300 Hz,
-//    +0.3 dB with anchors 25 Hz apart; not this test's subject.)
+//    above the microphones. (At 250 Hz the power is 0.9–1.1 dB above them: between the anchors
+//    at 200 and 300 Hz the power rises steeply and is interpolated linearly; +0.3 dB with
+//    anchors 25 Hz apart. Not this test's subject.)
 #include <algorithm>
 #include <cmath>
 #include <complex>
