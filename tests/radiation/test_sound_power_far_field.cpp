@@ -42,6 +42,7 @@
 #include "radiation/tyre_radiation.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
 #include "hemisphere_quadrature.hpp"
+#include "sphere_points.hpp"
 
 namespace rollnoise {
 namespace {
@@ -111,6 +112,44 @@ TEST(SoundPowerFarField, PowerOperatorIsTheFarFieldsPowerOnTheLoadedTyre) {
         worst = std::max(worst, std::abs(error));
       }
     }
+  }
+  RecordProperty("worst_relative_difference", std::to_string(worst));
+}
+
+// The classic reference over the rigid road: a hemisphere of radius a on the road, pulsating
+// with a uniform normal velocity v0, is with its image a pulsating sphere, whose power into the
+// half-space is half the sphere's: σ = W/(ρc·2πa²·v0²/2) = (ka)²/(1 + (ka)²) (e.g. Kinsler et
+// al., Fundamentals of Acoustics, §7.2), by the stage's power operator, rounded as it keeps it.
+// Measured within 2.2e-5 from 100 Hz to 3 kHz (the sources' fit of the uniform velocity and the
+// operator's rounding); 1e-3 asserted, as for the tyre above.
+TEST(SoundPowerFarField, PulsatingHemisphereOnTheRoadByThePowerOperator) {
+  const Medium air{};
+  const double a = 0.1, v0 = 1e-3;
+  const auto upper = [](const Eigen::Matrix3Xd& unit, double lowest) {
+    std::vector<Eigen::Index> kept;
+    for (Eigen::Index i = 0; i < unit.cols(); ++i)
+      if (unit(2, i) > lowest) kept.push_back(i);
+    Eigen::Matrix3Xd out(3, static_cast<Eigen::Index>(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) out.col(static_cast<Eigen::Index>(i)) = unit.col(kept[i]);
+    return out;
+  };
+  const Eigen::Matrix3Xd unit = upper(test::fibonacci_sphere(800), 0.0);
+  const Eigen::Matrix3Xd sources = upper(test::fibonacci_sphere(240), 0.05) * (0.5 * a);
+  const EquivalentSources model(sources, unit * a, unit, true, air);
+  double worst = 0.0;
+  for (double f : {100.0, 500.0, 1000.0, 3000.0}) {
+    const double omega = 2.0 * kPi * f, ka = omega / air.sound_speed * a;
+    const EquivalentSourceSolve solve = model.solve(omega, 1e-10);
+    const QuantisedPower power = quantise_power_operator(model.power_operator(solve, omega, unit.cols()));
+    const std::vector<Eigen::MatrixXcd> x = model.point_coordinates(Eigen::VectorXcd::Constant(unit.cols(), v0));
+    double squares = 0.0;
+    for (std::size_t c = 0; c < x.size(); ++c)
+      if (power.blocks[c].rows() > 0) squares += (power.blocks[c] * x[c]).squaredNorm();
+    const double sigma = 0.5 * squares / (air.density * air.sound_speed * 2.0 * kPi * a * a * 0.5 * v0 * v0);
+    const double exact = ka * ka / (1.0 + ka * ka);
+    std::printf("pulsating hemisphere on the road, %4.0f Hz: sigma %.6f, exact %.6f\n", f, sigma, exact);
+    EXPECT_NEAR(sigma, exact, 1e-3 * exact) << f << " Hz";
+    worst = std::max(worst, std::abs(sigma / exact - 1.0));
   }
   RecordProperty("worst_relative_difference", std::to_string(worst));
 }
