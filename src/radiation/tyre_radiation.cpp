@@ -19,6 +19,7 @@
 #include "core/progress.hpp"
 #include "core/real_fft_batch.hpp"
 #include "radiation/belt_sampling.hpp"
+#include "radiation/power_taper.hpp"
 #include "radiation/transfer_table.hpp"
 
 namespace rollnoise {
@@ -30,6 +31,7 @@ constexpr double kLowestAnchorHz = 20.0;
 // Zero padding after the record, s: longer than what is left of the receivers' responses once
 // the propagation delay is taken out (the horn's ringing dies within a few milliseconds).
 constexpr double kPaddingSeconds = 0.03;
+int padding_samples(double sample_rate) { return static_cast<int>(std::ceil(kPaddingSeconds * sample_rate)); }
 // The highest anchor is at most this fraction of the Nyquist frequency.
 constexpr double kNyquistFraction = 0.99;
 // η₀ of the combined sources (equivalent_sources.hpp), 1/m: the monopole's weight is
@@ -339,29 +341,40 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   const std::vector<double> anchor = anchors(sample_rate);
   const Eigen::Index samples = surface_velocity.rows();
   const auto length = static_cast<int>(
-      fft_friendly_size(static_cast<std::size_t>(samples) + static_cast<std::size_t>(std::ceil(kPaddingSeconds * sample_rate))));
+      fft_friendly_size(static_cast<std::size_t>(samples) + static_cast<std::size_t>(padding_samples(sample_rate))));
   const double bin_hz = sample_rate / length;
 
-  // Spectra of the velocities, steady part removed.
-  RealFftBatch velocity_fft(length, static_cast<int>(active));
-  for (Eigen::Index m = 0; m < active; ++m) {
-    const double mean = surface_velocity.col(m).mean();
-    for (int n = 0; n < length; ++n)
-      velocity_fft.at(static_cast<int>(m), n) = n < samples ? surface_velocity(n, m) - mean : 0.0;
-  }
-  velocity_fft.forward();
+  // Spectra of the velocities, steady part removed: for the power, of the record tapered at its
+  // ends (power_taper.hpp: the run's start and the cut ends, which the microphones' and the
+  // budget's estimates do not weigh, must not weigh in the power either); for the pressures, of
+  // the record as it is (the convolution with the receivers' responses is linear, and its ends
+  // are the record's own).
+  const Eigen::VectorXd taper = power_taper(samples, padding_samples(sample_rate));
+  const double taper_power = taper.squaredNorm();
   const auto first_bin = static_cast<int>(std::ceil(anchor.front() / bin_hz));
   const auto last_bin = std::min(length / 2, static_cast<int>(std::floor(anchor.back() / bin_hz)));
   const Eigen::Index band = std::max(0, last_bin - first_bin + 1);
+  RealFftBatch velocity_fft(length, static_cast<int>(active));
   Eigen::MatrixXcd spectra(active, band);
-  for (Eigen::Index b = 0; b < band; ++b)
-    for (Eigen::Index m = 0; m < active; ++m)
-      spectra(m, b) = velocity_fft.bin(static_cast<int>(m), first_bin + static_cast<int>(b));
+  const auto transform = [&](bool tapered) {
+    for (Eigen::Index m = 0; m < active; ++m) {
+      const double mean = surface_velocity.col(m).mean();
+      for (int n = 0; n < length; ++n)
+        velocity_fft.at(static_cast<int>(m), n) =
+            n < samples ? (tapered ? taper(n) : 1.0) * (surface_velocity(n, m) - mean) : 0.0;
+    }
+    velocity_fft.forward();
+    for (Eigen::Index b = 0; b < band; ++b)
+      for (Eigen::Index m = 0; m < active; ++m)
+        spectra(m, b) = velocity_fft.bin(static_cast<int>(m), first_bin + static_cast<int>(b));
+  };
   const auto frequency = [&](Eigen::Index b) { return (first_bin + static_cast<double>(b)) * bin_hz; };
 
-  // Parseval for the zero-padded transform: the mean over the record of a bin's harmonic power
-  // is ½qᴴSq·4/(N·L) with q the sources for the raw bin X_k (N samples, L the transform length).
-  const double power_scale = 4.0 / (static_cast<double>(samples) * length);
+  // Parseval for the zero-padded, tapered transform: the mean over the record of a bin's
+  // harmonic power is ½qᴴSq·4/(L·Σw²) with q the sources for the bin X_k of the tapered record
+  // (L the transform length; Σw² = N untapered).
+  transform(true);
+  const double power_scale = 4.0 / (length * taper_power);
   std::vector<AnchorResult> results(anchor.size());
   std::vector<double> seconds;
   for_each_anchor(anchor, active, progress, cache, seconds, [&](std::size_t a, AnchorOperators&& operators, bool from_cache) {
@@ -404,6 +417,7 @@ RadiatedSound TyreRadiation::radiate(const Eigen::MatrixXd& surface_velocity, do
   }
   const TransferTable table(anchor, std::move(transfers), out.delays_s);
 
+  transform(false);
   const auto receivers = static_cast<int>(receivers_.cols());
   RealFftBatch pressure_fft(length, receivers);
   for (int r = 0; r < receivers; ++r)
@@ -426,7 +440,6 @@ constexpr std::size_t kLeastBlock = 8192;
 // than one transform per point of the mesh at once (radiate()'s, 3 GB for 3000 points).
 constexpr int kPointsPerTransform = 32;
 
-int padding_samples(double sample_rate) { return static_cast<int>(std::ceil(kPaddingSeconds * sample_rate)); }
 int stream_length(double sample_rate) {
   if (!(sample_rate > 0.0) || !std::isfinite(sample_rate))
     throw std::invalid_argument("tyre radiation: the sample rate must be positive");
@@ -558,15 +571,10 @@ void TyreRadiationStream::apply_block(std::size_t rows) {
     mean_ = buffer_.topRows(n_rows).colwise().mean().transpose();
     mean_known_ = true;
   }
-  // The taper of the power's spectra (the class's comment): cosine ramps over the padding's
-  // length at both ends (a Hann window over a block shorter than two ramps), and Σw².
-  const Eigen::Index ramp = std::min<Eigen::Index>(padding_samples(sample_rate_), n_rows / 2);
-  double taper_power = 0.0;
-  for (Eigen::Index n = 0; n < n_rows; ++n) {
-    const Eigen::Index from_edge = std::min(n, n_rows - 1 - n);
-    taper_(n) = from_edge < ramp ? 0.5 * (1.0 - std::cos(std::numbers::pi * (static_cast<double>(from_edge) + 0.5) / static_cast<double>(ramp))) : 1.0;
-    taper_power += taper_(n) * taper_(n);
-  }
+  // The taper of the power's spectra (power_taper.hpp): cosine ramps over the padding's length
+  // at both ends (a Hann window over a block shorter than two ramps), and Σw².
+  taper_ = power_taper(n_rows, padding_samples(sample_rate_));
+  const double taper_power = taper_.squaredNorm();
 
   // The tapered spectra first, for the power in each bin, the anchors in parallel, added in
   // anchor order: the block's mean power is Σ_k ½qᴴSq·4/(L·Σw²), its share of the record's

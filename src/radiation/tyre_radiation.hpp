@@ -13,7 +13,9 @@
 //  - sound power as W = ½ qᴴSq (EquivalentSources::power_matrix) for the bin's own velocities,
 //    with the radiation operator interpolated linearly between the two anchors around the bin:
 //    each anchor's solve is applied to every bin within one anchor spacing of it, weighted by
-//    the hat function.
+//    the hat function. The power's bins are those of the record tapered at its ends
+//    (power_taper.hpp), the pressures' those of the record as it is: the run's start and the
+//    record's cut ends must not count in the power, which is quadratic in the velocities.
 // The steady part of the velocities (the mean of each point) carries no sound and is removed.
 // Below the lowest anchor and above the highest, nothing is radiated.
 //
@@ -194,9 +196,10 @@ class TyreRadiation {
 // spectrum, falling as 1/f², leaks into the upper bands where the tread's velocity is
 // weakest. Untapered, 1 s of plate_rough_80kmh (one block and 0.4 of another) gave 0.8 dB more
 // power than the whole record at 2.5 kHz and 2.0 dB more at 4 kHz (while every receiver agreed
-// to 0.001 dB); the whole record's own two ends leak the same way (its 4 kHz band fell 0.6 dB
-// from 1 s to 3 s). The ramps are cosines over the padding's length (30 ms), so the block keeps
-// almost all of its weight.
+// to 0.001 dB). The ramps are cosines over the padding's length (30 ms), so the block keeps
+// almost all of its weight; radiate() tapers the whole record the same way (power_taper.hpp),
+// and its first ramp also takes out the run's start (the tyre set rolling at once rings for
+// about 10 ms), so the two estimators are one.
 //
 // Normalisation of the power: a block of N_j samples with taper w gives its own mean power as
 // Σ_k ½qᴴSq·4/(L·Σw²) over its bins (radiate()'s Parseval, with Σw² for N_j; L the block's
