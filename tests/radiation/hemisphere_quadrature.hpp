@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "greens/gauss_legendre.hpp"
+
 namespace rollnoise::test {
 
 struct Hemisphere {
@@ -20,24 +22,12 @@ struct Hemisphere {
 
 inline Hemisphere hemisphere_quadrature(int n, int m, double radius) {
   constexpr double kPi = std::numbers::pi;
+  // cos θ on [0, 1]: the rule on [−1, 1] mapped, its weights halved.
+  const GaussRule rule = gauss_legendre(n);
   std::vector<double> x(static_cast<std::size_t>(n)), w(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5));  // Newton on P_n from Tricomi's estimate
-    double dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = t;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (t * p1 - p0) / (t * t - 1.0);
-      const double step = p1 / dp;
-      t -= step;
-      if (std::abs(step) < 1e-15) break;
-    }
-    x[static_cast<std::size_t>(i)] = 0.5 * (t + 1.0);                 // mapped to [0, 1]
-    w[static_cast<std::size_t>(i)] = 1.0 / ((1.0 - t * t) * dp * dp);  // ½ · 2/((1 − t²)P′²)
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = 0.5 * (rule.nodes[i] + 1.0);
+    w[i] = 0.5 * rule.weights[i];
   }
   Hemisphere h{Eigen::Matrix3Xd(3, n * m), Eigen::VectorXd(n * m)};
   for (int i = 0; i < n; ++i)
