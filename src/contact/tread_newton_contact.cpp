@@ -373,8 +373,10 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
                                " iterations on a contact set (max |gap| = " + sci(residual) + " m, tolerance " +
                                sci(tolerance) + " m)");
     ++iterations_;
-    // The merit before the step, computed only if the full step does not settle it (below).
+    // The merit before the step: without (2) max_S |gap|, the residual; with it computed only if
+    // the full step does not settle it (below).
     std::optional<double> start;
+    if (!symmetric_) start = residual;
     // Inexact Newton: (3) to a fraction of the residual that falls with it (quadratic rate).
     newton_system(std::max(0.5 * tolerance, residual * std::min(kForcing, residual / scale)));
     // The step in y = δ + A_pp·F(δ): Δy = Δδ + A_pp·x with Δδ = C·x on the points of (3), and
@@ -407,9 +409,7 @@ double TreadNewtonContact::solve_contact_set(const Eigen::VectorXd& q, double to
     for (double alpha = 1.0;; alpha *= 0.5) {
       take_step(alpha);
       if (alpha == 1.0 && set_residual() <= 0.5 * residual) break;
-      if (!start && !symmetric_) {
-        start = residual;  // max_S |gap| before the step: the merit without (2)
-      } else if (!start) {
+      if (!start) {
         start = merit_before_step(q);
         take_step(alpha);
       }
