@@ -1,5 +1,6 @@
 #include "road/profile_surface_road.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -88,13 +89,14 @@ Record read_record(const ConfigTable& road, const std::vector<std::filesystem::p
 // isotropic surface the density its lines have (TextureBandPsd::realisable_line_density),
 // standardised and mapped through the marginal.
 TranslatedLineMaker translated_line_maker(const std::vector<double>& centres, double spacing,
-                                          std::function<double(double)> marginal, bool isotropic) {
+                                          std::function<double(double)> marginal, bool isotropic,
+                                          std::uint64_t seed = calibration_seed) {
   const auto n = fft_friendly_size(static_cast<std::size_t>(std::ceil(translation_calibration_length(centres, spacing) / spacing)));
-  return [centres, spacing, marginal = std::move(marginal), isotropic, n](const std::vector<double>& levels) {
+  return [centres, spacing, marginal = std::move(marginal), isotropic, n, seed](const std::vector<double>& levels) {
     const TextureBandPsd psd(centres, levels);
     const double period = spacing * static_cast<double>(n);
     std::vector<double> line = synthesise_periodic_profile(
-        n, spacing, calibration_seed,
+        n, spacing, seed,
         [&](double wavenumber) {
           return spectral_amplitude_1d(isotropic ? psd.realisable_line_density(wavenumber) : psd.line_density(wavenumber), period);
         },
@@ -121,6 +123,69 @@ std::vector<double> isotropic_levels(const std::vector<double>& centres, const s
     out.push_back(10.0 * std::log10(power / 1e-12));
   }
   return out;
+}
+
+// The map and the Gaussian spectrum of the surface (step 3 of the method). The map starts as the
+// record's band-limited distribution Q. The translated lines also hold, beside the bands, the
+// harmonics the map makes, and taking them away (as the record's bands were taken) pulls the
+// distribution towards the Gaussian: for the CAPTIF fine asphalt the kurtosis within the bands
+// falls from 4.69 to 4.42. So, as IAAFT alternates its spectrum and its rank order
+// (Schreiber & Schmitz 1996), the map's quantiles are corrected by what the band-passed line
+// misses, z_i <- z_i + (q_i - h_i) / s at each plotting position, and the spectrum recalibrated,
+// until the band-passed lines' skewness and kurtosis are the record's within 0.03 (one correction
+// for the fine asphalt: 4.71). The lines are analysed in pieces as long as the record's
+// (band_pass_in_record_pieces), as the record was.
+struct Translation {
+  std::shared_ptr<const HeightDistribution> map;
+  TranslationSpectrum gaussian;
+};
+
+Translation calibrate_map_and_spectrum(const RecordTexture& record, const std::vector<double>& surface_levels,
+                                       double spacing, bool isotropic) {
+  std::vector<double> target;
+  for (const auto& line : record.band_passed) target.insert(target.end(), line.begin(), line.end());
+  const HeightDistribution record_distribution(target);
+  const HeightMoments wanted = record_distribution.moments();
+  std::sort(target.begin(), target.end());
+  constexpr int rounds = 4;
+  constexpr double converged = 0.03;   // skewness and kurtosis
+  std::vector<double> map_heights = target;
+  Translation best;
+  double best_miss = std::numeric_limits<double>::infinity();
+  for (int round = 0; round < rounds; ++round) {
+    auto map = std::make_shared<const HeightDistribution>(map_heights);
+    const auto marginal = [map](double u) { return map->from_standard_normal(u); };
+    const TranslatedLineMaker maker = translated_line_maker(record.centres_m, spacing, marginal, isotropic);
+    TranslationSpectrum gaussian = calibrate_translation(record.centres_m, surface_levels, spacing, maker);
+    // The distribution the lines have, from several realisations (about 2^20 heights): the
+    // kurtosis of one 30 m line of the fine asphalt scatters by 0.1 to 0.2.
+    std::vector<double> pieces;
+    std::uint64_t lines = 1;
+    for (std::uint64_t seed = calibration_seed; seed < calibration_seed + lines; ++seed) {
+      std::vector<double> line =
+          (seed == calibration_seed ? maker : translated_line_maker(record.centres_m, spacing, marginal, isotropic, seed))(
+              gaussian.gaussian_levels_db);
+      if (seed == calibration_seed) lines = std::clamp<std::uint64_t>((std::uint64_t{1} << 20) / line.size(), 1, 8);
+      for (double& v : line) v *= gaussian.scale;
+      for (const auto& piece : band_pass_in_record_pieces(line, spacing, record)) pieces.insert(pieces.end(), piece.begin(), piece.end());
+    }
+    const HeightDistribution made(std::move(pieces));
+    const double miss = std::max(std::abs(made.moments().skewness - wanted.skewness),
+                                 std::abs(made.moments().kurtosis - wanted.kurtosis));
+    const double scale = gaussian.scale;
+    if (miss < best_miss) {
+      best_miss = miss;
+      best = {map, std::move(gaussian)};
+    }
+    if (miss < converged || round + 1 == rounds) break;
+    const double n = static_cast<double>(map_heights.size());
+    for (std::size_t i = 0; i < map_heights.size(); ++i) {
+      const double p = (static_cast<double>(i) + 0.5) / n;
+      map_heights[i] += (target[i] - made.quantile(p)) / scale;
+    }
+    std::sort(map_heights.begin(), map_heights.end());
+  }
+  return best;
 }
 
 std::vector<std::string> surface_warnings(const RecordTexture& record) {
@@ -170,23 +235,19 @@ std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road
   Record data = read_record(road, files);
   try {
     RecordTexture record = measure_record_texture(data.lines, data.spacing, data.names);
-    std::vector<double> pooled;
-    for (const auto& line : record.band_passed) pooled.insert(pooled.end(), line.begin(), line.end());
-    const auto distribution = std::make_shared<const HeightDistribution>(std::move(pooled));
-    spec.marginal = [distribution](double u) { return distribution->from_standard_normal(u); };
     spec.wavelengths = record.centres_m;
     spec.levels = record.levels_db;
     const double spacing = texture_sample_spacing(spec);
     const bool isotropic = spec.anisotropy == TextureRoadSpec::Anisotropy::isotropic;
     std::vector<double> surface_levels = isotropic ? isotropic_levels(record.centres_m, record.levels_db) : record.levels_db;
-    const TranslationSpectrum gaussian =
-        calibrate_translation(record.centres_m, surface_levels, spacing,
-                              translated_line_maker(record.centres_m, spacing, spec.marginal,
-                                                    isotropic));
+    const Translation translation = calibrate_map_and_spectrum(record, surface_levels, spacing, isotropic);
+    const TranslationSpectrum& gaussian = translation.gaussian;
     spec.levels = gaussian.gaussian_levels_db;
-    spec.marginal = [distribution, scale = gaussian.scale](double u) { return scale * distribution->from_standard_normal(u); };
+    spec.marginal = [map = translation.map, scale = gaussian.scale](double u) { return scale * map->from_standard_normal(u); };
     std::vector<std::string> warnings = surface_warnings(record);
-    const HeightMoments moments = distribution->moments();
+    std::vector<double> pooled;
+    for (const auto& line : record.band_passed) pooled.insert(pooled.end(), line.begin(), line.end());
+    const HeightMoments moments = height_moments(pooled);
     return std::make_unique<ProfileSurfaceRoad>(make_rolling_texture_surface(spec), std::move(record), moments,
                                                 std::move(surface_levels), gaussian.gaussian_levels_db, spacing,
                                                 std::move(warnings));

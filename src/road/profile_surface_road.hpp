@@ -14,14 +14,17 @@
 //     per band, more just beyond a steeper fall, which no isotropic surface has (a short
 //     record's longest bands, estimated from few modes, often fall so).
 //  3. The Gaussian levels G_b whose translation s Q(Phi(g / sigma)) has those levels
-//     (translation_calibration.hpp).
+//     (translation_calibration.hpp), and the map Q corrected, IAAFT-like, until the translated
+//     lines, band-passed in pieces as long as the record's, have the record's skewness and
+//     kurtosis (the map's harmonics outside the bands carry some of the distribution's tails).
 //  4. A Gaussian isotropic texture surface with the levels G_b, one oblique plane wave per
 //     wavenumber along x (texture_waves.hpp), mapped point by point through Q(Phi(g / sigma)),
 //     then the lead-in window. Lines across the road are as correlated as isotropy says: the
 //     map is the same at every point, so the field stays isotropic.
 // What it keeps: each line's spectrum in the supported bands (within a few tenths of a dB), the
-// distribution of heights (skewness, kurtosis and so the MPD of the band-limited record). What
-// it cannot keep: the shapes of individual stones (a translated Gaussian field has no edges or
+// distribution of heights within the bands (skewness and kurtosis). What it cannot keep: the MPD
+// where it depends on more than the spectrum and the distribution (a chip seal's flat stone
+// tops: +11 %, as IAAFT surrogates of the record give), the shapes of individual stones (a translated Gaussian field has no edges or
 // flat faces, only its heights' distribution and correlation), anything at wavelengths the
 // record does not support, and any dependence between the phases of different wavelengths
 // beyond what the map makes.

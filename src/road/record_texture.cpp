@@ -128,4 +128,15 @@ std::vector<std::vector<double>> band_pass_lines(const std::vector<std::vector<d
   return out;
 }
 
+std::vector<std::vector<double>> band_pass_in_record_pieces(const std::vector<double>& line, double spacing_m,
+                                                            const RecordTexture& record) {
+  const auto piece = static_cast<std::size_t>(std::lround(record.shortest_line_m / spacing_m));
+  if (piece < 4) throw std::invalid_argument("band_pass_in_record_pieces: the record's lines are under 4 samples of this spacing");
+  std::vector<std::vector<double>> pieces;
+  for (std::size_t start = 0; start + piece <= line.size(); start += piece)
+    pieces.emplace_back(line.begin() + static_cast<std::ptrdiff_t>(start), line.begin() + static_cast<std::ptrdiff_t>(start + piece));
+  if (pieces.empty()) throw std::invalid_argument("band_pass_in_record_pieces: the line is shorter than the record's lines");
+  return band_pass_lines(pieces, spacing_m, record.lowest_wavenumber, record.highest_wavenumber);
+}
+
 }  // namespace rollnoise
