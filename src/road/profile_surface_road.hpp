@@ -23,11 +23,11 @@
 //     map is the same at every point, so the field stays isotropic.
 // What it keeps: each line's spectrum in the supported bands (within a few tenths of a dB), the
 // distribution of heights within the bands (skewness and kurtosis). What it cannot keep: the MPD
-// where it depends on more than the spectrum and the distribution (a chip seal's flat stone
-// tops: +11 %, as IAAFT surrogates of the record give), the shapes of individual stones (a translated Gaussian field has no edges or
-// flat faces, only its heights' distribution and correlation), anything at wavelengths the
-// record does not support, and any dependence between the phases of different wavelengths
-// beyond what the map makes.
+// where it depends on more than the spectrum and the distribution (a chip seal's flat stone tops:
+// +12 %, where IAAFT surrogates of the record give +9 %), the shapes of individual stones (a
+// translated Gaussian field has no edges or flat faces, only its heights' distribution and
+// correlation), anything at wavelengths the record does not support, and any dependence between
+// the phases of different wavelengths beyond what the map makes.
 //
 // Keys: file (required: a profile file, or a list of them at the same spacing; relative to the
 // file that sets it), seed (default 1), length (m, default 20), width (m, default 0.5),
