@@ -332,7 +332,7 @@ std::vector<Stone> place_chips(const AggregateRoadSpec& spec, const Checked& k, 
     const double zc = spec.texture == AggregateRoadSpec::Texture::negative
                           ? spec.shape_factor * k.dmax - (1.0 - negative_cut_fraction) * c
                           : c;
-    stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});
+    if (zc + c > k.base) stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});  // else drowned in binder
   }
   return in_order_of_x(stones, x_lo, x_hi, k.spacing);
 }
@@ -352,6 +352,8 @@ std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked
     throw_bad("length", "the road would hold up to " + format_number(volume_needed / smallest) +
                             " stones, more than the limit of 2^25; use a shorter length (or width)");
   }
+  std::vector<std::array<double, 2>> inverse_cubes;  // lo^-3 and hi^-3 of each interval
+  for (const RolledMix::Interval& in : mix.intervals) inverse_cubes.push_back({std::pow(in.lo, -3.0), std::pow(in.hi, -3.0)});
   std::vector<Stone> stones;
   double volume = 0.0;
   const CancellationToken cancel;
@@ -367,13 +369,17 @@ std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked
     const double below = i == 0 ? 0.0 : mix.cumulative[i - 1];
     const double v = std::clamp((u - below) / (mix.cumulative[i] - below), 0.0, 1.0);
     const RolledMix::Interval& in = mix.intervals[i];
-    const double lo3 = std::pow(in.lo, -3.0), hi3 = std::pow(in.hi, -3.0);
+    const auto [lo3, hi3] = inverse_cubes[i];
     const double d = std::clamp(std::pow(lo3 - v * (lo3 - hi3), -1.0 / 3.0), in.lo, in.hi);
     const double b = d / 2.0;
     const double a = spec.elongation * b;
     const double c = spec.shape_factor * b;
     volume += 4.0 / 3.0 * std::numbers::pi * a * b * c;
-    stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), -mix.depth * w});
+    // A stone whose top lies below the mastic's surface is drawn (it fills its volume, and the
+    // draws stay in step) but not kept: it raises no point of the surface, which starts at the
+    // mastic's level (raise_to_stones). Most stones of a mix lie so deep.
+    const double zc = -mix.depth * w;
+    if (zc + c > k.base) stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});
   }
   return in_order_of_x(stones, x_lo, x_hi, k.spacing);
 }
