@@ -17,8 +17,7 @@ namespace rollnoise {
 
 namespace {
 
-RollingTyreModel plate_model(const ConfigTable& tyre) {
-  const PlateTyre file = read_plate_tyre(tyre);
+RollingTyreModel plate_model(const PlateTyre& file) {
   RollingTyreModel out;
   out.model = "plate";
   out.modes = std::make_unique<KroppPlate>(file.plate);
@@ -91,15 +90,35 @@ std::function<double(double, double)> layer_static_compliance(const TwoLayerTyre
 
 }  // namespace
 
-RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
-                                         const std::optional<std::filesystem::path>& cache_directory) {
-  const std::string model = tyre.choice("model", {"plate", "two_layer", "tabulated"});
-  if (model == "plate") return plate_model(tyre);
-  reject_separate_tread(tyre, model);
+RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre) {
+  RollingTyreSpec spec;
+  spec.model = tyre.choice("model", {"plate", "two_layer", "tabulated"});
+  if (spec.model == "plate") {
+    spec.plate = read_plate_tyre(tyre);
+    spec.radius = spec.plate->plate.radius;
+    spec.width = spec.plate->plate.width;
+    return spec;
+  }
+  reject_separate_tread(tyre, spec.model);
+  if (spec.model == "two_layer") {
+    spec.two_layer = std::make_shared<const TwoLayerParameters>(read_two_layer_tyre(tyre));
+    spec.radius = spec.two_layer->radius;
+    spec.width = spec.two_layer->width;
+  } else {
+    spec.table = read_tabulated_tyre(tyre);
+    spec.radius = spec.table->radius;
+    spec.width = spec.table->width;
+  }
+  return spec;
+}
+
+RollingTyreModel make_rolling_tyre_model(RollingTyreSpec spec, const std::optional<std::filesystem::path>& cache_directory) {
+  const std::string& model = spec.model;
+  if (spec.plate) return plate_model(*spec.plate);
   const auto started = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  if (model == "two_layer") {
-    const TwoLayerParameters p = read_two_layer_tyre(tyre);
+  if (spec.two_layer) {
+    const TwoLayerParameters& p = *spec.two_layer;
     const TwoLayerTyre layers(p);
     const Eigen::VectorXd frequencies = tyre_mode_fit_frequencies();
     ModalReceptanceTable table = cached_two_layer_table(layers, frequencies, p.circumferential_modes, cache_directory);
@@ -131,7 +150,7 @@ RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre,
     };
     return out;
   }
-  ModalReceptanceTable table = read_tabulated_tyre(tyre);
+  ModalReceptanceTable table = std::move(*spec.table);
   const std::string fit_key = fitted_modes_key(modal_table_content_key(table), tyre_mode_fit_options());
   RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false, cache_directory, fit_key);
   out.tread_width = out.width;

@@ -13,12 +13,14 @@
 
 #include "greens/fitted_modal_tyre.hpp"
 #include "greens/kropp_plate.hpp"
+#include "greens/modal_receptance_table.hpp"
 #include "greens/modal_tyre.hpp"
 #include "greens/plate_factory.hpp"
 
 namespace rollnoise {
 
 class ConfigTable;
+struct TwoLayerParameters;
 
 struct RollingTyreModel {
   std::string model;                 // "plate" | "two_layer" | "tabulated"
@@ -52,10 +54,25 @@ struct RollingTyreModel {
   std::optional<ModalFitReport> fit;
 };
 
+// The [tyre] table read and checked, before anything is computed from it: a case's other tables
+// are checked against it (the radius and width) before the two-layer tyre's table and fits, which
+// take tens of seconds without the cache, so that a wrong key anywhere costs no wait.
+struct RollingTyreSpec {
+  std::string model;  // "plate" | "two_layer" | "tabulated"
+  double radius = 0.0;
+  double width = 0.0;
+  std::optional<PlateTyre> plate;
+  std::shared_ptr<const TwoLayerParameters> two_layer;  // (held by pointer: its header is heavy)
+  std::optional<ModalReceptanceTable> table;  // tabulated: the file's table
+};
+
 // Reads the [tyre] table (or a model file's top level) of model plate, two_layer or tabulated.
-// `cache_directory`: where two-layer tables are kept between runs (none: not cached). Unknown
-// keys, non-physical values and a [tyre.tread] given to a model that includes its tread are
-// InputErrors naming the file and the key.
-RollingTyreModel read_rolling_tyre_model(const ConfigTable& tyre, const std::optional<std::filesystem::path>& cache_directory);
+// Unknown keys, non-physical values and a [tyre.tread] given to a model that includes its tread
+// are InputErrors naming the file and the key.
+RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre);
+
+// The rolling model of a checked table. `cache_directory`: where two-layer tables and fits are
+// kept between runs (none: not cached).
+RollingTyreModel make_rolling_tyre_model(RollingTyreSpec spec, const std::optional<std::filesystem::path>& cache_directory);
 
 }  // namespace rollnoise

@@ -193,7 +193,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // is in the wall time only.
   StageTimes stages;
 
-  const RollingTyreModel model = read_rolling_tyre_model(tyre, options.cache);
+  // Every table is read and checked before the tyre's model is made (the two-layer tyre's table
+  // and fits take tens of seconds without the cache): a wrong key costs no wait. The road's keys
+  // are checked when it is made, after the model, since it needs the grid.
+  RollingTyreSpec tyre_spec = read_rolling_tyre_spec(tyre);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   const bool plots = output.boolean("plots", true);
   // What contact.h5 holds (tyre_step_outputs.hpp).
@@ -202,9 +205,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // The radiated band reaches the upper edge of the band_top band (5623 Hz for 5 kHz) unless
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
-      read_tyre_sound_settings(file.optional_section("radiation"), output, model.radius, model.width,
+      read_tyre_sound_settings(file.optional_section("radiation"), output, tyre_spec.radius, tyre_spec.width,
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
+  const RollingTyreModel model = make_rolling_tyre_model(std::move(tyre_spec), options.cache);
   if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
   if (options.cache_limit) sound.cache_limit = *options.cache_limit;
   // A folder over its limit (a smaller limit than before, entries of the other caches, an older

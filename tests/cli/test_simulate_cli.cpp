@@ -18,6 +18,7 @@
 #include <sstream>
 #include <thread>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -1005,6 +1006,26 @@ TEST(SimulateCli, TwoLayerTyreRollsThroughTheCommonPathAndCachesItsModes) {
   EXPECT_TRUE(b["mode_fit"]["table_from_cache"].get<bool>());
   EXPECT_TRUE(b["mode_fit"]["fits_from_cache"].get<bool>());
   EXPECT_EQ(read_text(ws.path("first") / "contact.csv"), read_text(ws.path("second") / "contact.csv"));
+}
+
+// A wrong key in any table but the road's is reported before the two-layer tyre's modes are
+// tabulated and fitted (tens of seconds without the cache): nothing reaches the cache folder.
+TEST(SimulateCli, TwoLayerCaseWithABadKeyFailsBeforeItsModesAreComputed) {
+  Workspace ws;
+  ws.write("two_layer.toml", small_two_layer_model());
+  for (const auto& [section, key, value, named] :
+       {std::tuple<const char*, const char*, const char*, const char*>{"output", "bogus", "1", "[output] bogus"},
+        {"rolling", "speed", "-3.0", "[rolling] speed"},
+        {"radiation", "receivers", "3", "[radiation] receivers"}}) {
+    ws.write("case.toml", edit_case(project_case("two_layer_smooth_80kmh.toml"),
+                                    {{"tyre", "file", "\"two_layer.toml\""}, {section, key, value}}));
+    const RunResult r = ws.run({"simulate", "case.toml", "--out", "out"}, "ROLLNOISE_CACHE=" + ws.path("cache").string() + " ");
+    EXPECT_EQ(r.status, 2) << describe(r);
+    EXPECT_TRUE(contains(r.err, named)) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(ws.path("out")));
+    EXPECT_TRUE(!fs::exists(ws.path("cache")) || fs::is_empty(ws.path("cache"))) << "the modes were computed first";
+  }
 }
 
 TEST(SimulateCli, TwoLayerTyreWithASeparateTreadIsAnError) {
