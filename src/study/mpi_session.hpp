@@ -24,6 +24,9 @@ class MpiSession {
 
   int rank() const noexcept { return rank_; }
   int size() const noexcept { return size_; }
+  // The ranks that share this rank's machine (MPI_COMM_TYPE_SHARED), this one included: the
+  // machine's cores are theirs together. 1 without MPI.
+  int ranks_on_node() const noexcept { return ranks_on_node_; }
   bool active() const noexcept { return active_; }
   // Whether this build can run under MPI at all.
   static bool built_with_mpi() noexcept;
@@ -43,6 +46,7 @@ class MpiSession {
   bool finalize_ = true;
   int rank_ = 0;
   int size_ = 1;
+  int ranks_on_node_ = 1;
 };
 
 }  // namespace rollnoise

@@ -116,8 +116,10 @@ std::vector<CaseOutcome> run_study_cases(const StudySpec& spec, const std::vecto
       1, std::min(mine.size(), static_cast<std::size_t>(options.threads > 0 ? options.threads
                                                           : mpi.size() > 1 ? 1
                                                                            : static_cast<int>(cores))));
-  // The cores shared among the cases running side by side: each case's radiation takes its part.
-  const int radiation_threads = std::max(1, static_cast<int>(cores / workers));
+  // The cores shared among the cases running side by side, on every rank of this machine: each
+  // case's radiation takes its part (under mpirun -n 2 on 2 cores, one thread each, not two).
+  const unsigned rank_cores = std::max(1u, cores / static_cast<unsigned>(std::max(1, mpi.ranks_on_node())));
+  const int radiation_threads = std::max(1, static_cast<int>(rank_cores / workers));
 
   std::vector<CaseOutcome> outcomes(cases.size());
   std::atomic<std::size_t> next{0};

@@ -146,6 +146,12 @@ TEST(StudyCli, SameResultsWithOneThreadTwoThreadsAndTwoMpiRanks) {
   EXPECT_EQ(results_without_wall_times(ws.path("mpi") / "results.csv"), expected);
   EXPECT_EQ(read_text(ws.path("mpi") / "spectra.csv"), read_text(ws.path("one") / "spectra.csv"));
   EXPECT_EQ(read_json(ws.path("mpi") / "summary.json")["ranks"], 2);
+  // Both ranks on this machine share its cores: each case's radiation takes half of them.
+  const unsigned half = std::max(1u, std::max(1u, std::thread::hardware_concurrency()) / 2);
+  for (const auto& entry : fs::directory_iterator(ws.path("mpi") / "cases")) {
+    if (!fs::is_regular_file(entry.path() / "summary.json")) continue;
+    EXPECT_EQ(read_json(entry.path() / "summary.json")["radiation"]["threads"].get<unsigned>(), half) << entry.path();
+  }
 #else
   GTEST_SKIP() << "built without MPI (ROLLNOISE_MPI=OFF): the mpirun part is not run";
 #endif
