@@ -5,8 +5,9 @@
 // losses make Im ρ < 0 and Im k < 0. Quantities per unit of flux (Darcy) velocity, so that
 // pressure and normal velocity are continuous between layers (layered_absorber.hpp).
 //
-// Hamet & Bérengier (Inter-Noise 93; Bérengier et al., Appl. Acoust. 52 (1997) 143–162), the
-// usual phenomenological model of porous pavements, with porosity Ω, flow resistivity σ and
+// Hamet & Bérengier (Inter-Noise 93; Bérengier, Stinson, Daigle & Hamet 1997, "Porous road
+// pavements: acoustical characterization and propagation effects"), the usual phenomenological
+// model of porous pavements, with porosity Ω, flow resistivity σ and
 // tortuosity α∞ (their q²):
 //   ρ(ω) = (ρ₀α∞/Ω)·(1 − i f_μ/f),                   f_μ = σΩ/(2πρ₀α∞)
 //   K(ω) = (γP₀/Ω) / (γ − (γ − 1)/(1 − i f_θ/f)),     f_θ = σΩ/(2πρ₀Pr)
