@@ -133,7 +133,9 @@ TEST(AbsorbingRoadCli, BadInputIsOneMessageAndExitStatusTwo) {
     const RunResult r = ws.run(args);
     EXPECT_EQ(r.status, 2) << c.what << ": " << describe(r);
     EXPECT_TRUE(contains(r.err, c.expected)) << c.what << ": " << r.err;
-    if (c.options.empty()) EXPECT_TRUE(contains(r.err, "r.toml")) << c.what << ": " << r.err;
+    if (c.options.empty()) {
+      EXPECT_TRUE(contains(r.err, "r.toml")) << c.what << ": " << r.err;
+    }
     EXPECT_EQ(count_lines(r.err), 1u) << c.what << ": " << r.err;
     EXPECT_FALSE(fs::exists(ws.path("out"))) << c.what;
   }
