@@ -33,21 +33,21 @@ PorousLayerWave porous_layer_wave(const PorousLayer& layer, const AirProperties&
   const double gamma = air.ratio_of_specific_heats;
   const double eta = air.viscosity;
   const double pr = air.prandtl;
-  const double omega_ = layer.porosity;
+  const double phi = layer.porosity;  // Ω
   const double sigma = layer.flow_resistivity;
   const double alpha = layer.tortuosity;
   // The viscous and thermal relaxation terms (Hamet–Bérengier: the square roots are 1).
-  Complex viscous = sigma * omega_ / (i * omega * rho0 * alpha);
-  Complex thermal = sigma * omega_ / (i * omega * rho0 * pr);
+  Complex viscous = sigma * phi / (i * omega * rho0 * alpha);
+  Complex thermal = sigma * phi / (i * omega * rho0 * pr);
   if (layer.model == PorousModel::jca) {
     const double lv = layer.viscous_length;
     const double lt = layer.thermal_length;
-    viscous *= std::sqrt(1.0 + 4.0 * i * alpha * alpha * eta * rho0 * omega / (sigma * sigma * lv * lv * omega_ * omega_));
+    viscous *= std::sqrt(1.0 + 4.0 * i * alpha * alpha * eta * rho0 * omega / (sigma * sigma * lv * lv * phi * phi));
     thermal = 8.0 * eta / (i * lt * lt * pr * omega * rho0) * std::sqrt(1.0 + i * rho0 * omega * pr * lt * lt / (16.0 * eta));
   }
   PorousLayerWave wave;
-  wave.density = rho0 * alpha / omega_ * (1.0 + viscous);
-  wave.bulk_modulus = gamma * air.static_pressure / omega_ / (gamma - (gamma - 1.0) / (1.0 + thermal));
+  wave.density = rho0 * alpha / phi * (1.0 + viscous);
+  wave.bulk_modulus = gamma * air.static_pressure / phi / (gamma - (gamma - 1.0) / (1.0 + thermal));
   wave.characteristic_impedance = std::sqrt(wave.density * wave.bulk_modulus);
   wave.wavenumber = omega * std::sqrt(wave.density / wave.bulk_modulus);
   // The principal roots give Re ≥ 0; a wave decaying into the layer has Im k < 0 (e^{iωt}).
