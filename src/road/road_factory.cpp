@@ -16,6 +16,7 @@
 #include "road/flat_road.hpp"
 #include "road/random_road.hpp"
 #include "road/random_spectrum.hpp"
+#include "road/road_absorption.hpp"
 #include "road/road_profile.hpp"
 #include "road/sine_road.hpp"
 #include "road/cleat_road.hpp"
@@ -129,6 +130,9 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
     }
   }
   const std::string type = road.choice("type", {"flat", "sine", "random", "file", "cleat", "iso8608", "texture", "aggregate"});
+  // A profile has no acoustics of its own (a point model radiates nothing), but the table's
+  // [road.absorption] is checked and known, so that a surface file serves both kinds of model.
+  (void)read_road_absorption(road);
   if (type == "flat") {
     road.reject_unknown_keys();
     return std::make_unique<FlatRoad>();

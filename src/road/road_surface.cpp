@@ -111,12 +111,17 @@ std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x
   }
   const std::string type = road.choice(
       "type", {"flat", "sine", "random", "file", "cleat", "iso8608", "random_surface", "surface", "profile_surface", "texture", "aggregate"});
-  if (type == "profile_surface") return make_profile_surface(road, x_max, half_width);
-  if (type == "random_surface") return make_random_surface(road, x_max, half_width);
-  if (type == "surface") return make_height_map(road, x_min, x_max, half_width);
-  if (type == "texture") return make_texture_map(road, x_max, half_width);
-  if (type == "aggregate") return make_aggregate_map(road, x_max, half_width);
-  return std::make_unique<ProfileSurface>(make_road_profile(road, x_min, x_max));
+  // Read before the type's keys, whose check for unknown keys must know it.
+  RoadAbsorption absorption = read_road_absorption(road);
+  std::unique_ptr<RoadSurface> surface;
+  if (type == "profile_surface") surface = make_profile_surface(road, x_max, half_width);
+  else if (type == "random_surface") surface = make_random_surface(road, x_max, half_width);
+  else if (type == "surface") surface = make_height_map(road, x_min, x_max, half_width);
+  else if (type == "texture") surface = make_texture_map(road, x_max, half_width);
+  else if (type == "aggregate") surface = make_aggregate_map(road, x_max, half_width);
+  else surface = std::make_unique<ProfileSurface>(make_road_profile(road, x_min, x_max));
+  surface->set_absorption(std::move(absorption));
+  return surface;
 }
 
 }  // namespace rollnoise

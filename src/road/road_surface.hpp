@@ -8,8 +8,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "road/road_absorption.hpp"
 #include "road/road_profile.hpp"
 
 namespace rollnoise {
@@ -31,6 +33,14 @@ class RoadSurface {
   virtual std::optional<double> sample_spacing() const { return std::nullopt; }
   // What a user should know before rolling a tyre over this road; empty: nothing.
   virtual std::vector<std::string> warnings() const { return {}; }
+
+  // The surface's acoustics ([road.absorption], road_absorption.hpp): rigid unless its table
+  // says otherwise.
+  const RoadAbsorption& absorption() const noexcept { return absorption_; }
+  void set_absorption(RoadAbsorption absorption) { absorption_ = std::move(absorption); }
+
+ private:
+  RoadAbsorption absorption_;
 };
 
 // A 1-D profile used on every lateral line: r(x, y) = r(x).
@@ -56,7 +66,8 @@ class ProfileSurface final : public RoadSurface {
 // the same keys and defaults). The 2-D types are "random_surface" (random_surface.hpp),
 // "surface" (a height-map file, height_map_surface.hpp), "texture" (texture_road.hpp; as a
 // 2-D map, with the keys width and anisotropy) and "aggregate" (aggregate_road.hpp; as a 2-D
-// map, with the key width). The run looks at x in [x_min, x_max] and y in
+// map, with the key width). Every type takes the sub-table `absorption` (road_absorption.hpp),
+// carried by the surface. The run looks at x in [x_min, x_max] and y in
 // [-half_width, half_width] (half_width >= 0). Unknown keys are rejected; every bad value is an
 // InputError naming "[road] key" in the file that set it, or the data file.
 std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,

@@ -38,6 +38,7 @@ struct RoadUnderTest {
   // Files the TOML input named outside their folder, through ".." or a symlink (referenced_file.hpp).
   std::vector<PathOutsideCaseFolder> paths_outside_folder;
   std::optional<SurfaceContactLaw> contact_law;
+  RoadAbsorption absorption;
 };
 
 nlohmann::json toml_to_json(const toml::table& table) {
@@ -101,6 +102,7 @@ RoadUnderTest generate(const RoadRunOptions& options) {
       out.target.emplace_back(measured->record().nominal_m[b], measured->record().levels_db[b]);
   }
   out.description = surface->type() + " road from " + path.string();
+  out.absorption = surface->absorption();
 
   // A texture road is read at its own grid unless --spacing says otherwise: between its samples
   // the road is linear, which lowers the band levels near the grid's scale (by (2 + cos(2 pi h /
@@ -137,7 +139,8 @@ RoadUnderTest generate(const RoadRunOptions& options) {
 }
 
 // The analysis and summary.json of a road ready for it.
-RoadRun analyse(RoadUnderTest road, const std::string& input, std::chrono::steady_clock::time_point started) {
+RoadRun analyse(RoadUnderTest road, const std::string& input, const std::optional<GroundEffectGeometry>& ground_effect,
+                std::chrono::steady_clock::time_point started) {
   RoadRun run;
   const LoadedProfile& p = road.profile;
   // The analysis names what is wrong (a profile sampled coarser than 1 mm, say); the file it
@@ -195,8 +198,19 @@ RoadRun analyse(RoadUnderTest road, const std::string& input, std::chrono::stead
                               {"tread_poisson_ratio", law.options.rubber.poisson_ratio},
                               {"punch_compliance_m_per_N", law.punch_compliance}};
   }
+  // The surface's acoustics: its absorption when it has any, its ground effect when asked.
+  if (!road.absorption.rigid()) {
+    run.absorption_bands = absorption_bands(road.absorption);
+    summary["absorption"] = absorption_summary(road.absorption, run.absorption_bands);
+  }
+  if (ground_effect) {
+    run.ground_effect = ground_effect_bands(road.absorption, *ground_effect);
+    summary["ground_effect"] = ground_effect_summary(*ground_effect, run.ground_effect);
+    if (road.absorption.rigid()) summary["ground_effect"]["note"] = "a rigid surface: no change from the rigid road";
+  }
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   run.summary = std::move(summary);
+  run.absorption = std::move(road.absorption);
   run.profile = std::move(road.profile);
   run.description = std::move(road.description);
   run.target = std::move(road.target);
@@ -284,6 +298,7 @@ RoadRun run_road(const RoadRunOptions& options, const fs::path& out) {
     throw InputError(options.input, "--length",
                      "--length / --spacing gives more than " + std::to_string(max_profile_samples) + " samples");
   }
+  if (options.ground_effect) check_ground_effect_geometry(*options.ground_effect, "command line", "--ground-effect");
   RoadUnderTest road;
   if (is_toml) {
     // A generated road's size is set by the command line (up to max_profile_samples × 1000
@@ -310,7 +325,7 @@ RoadRun run_road(const RoadRunOptions& options, const fs::path& out) {
                                              "--contact-law");
     }
   }
-  return analyse(std::move(road), options.input, started);
+  return analyse(std::move(road), options.input, options.ground_effect, started);
 }
 
 RoadRun run_road_heights(std::vector<std::vector<double>> z_lines, double spacing_m, std::vector<double> y,
@@ -334,7 +349,7 @@ RoadRun run_road_heights(std::vector<std::vector<double>> z_lines, double spacin
   road.profile = make_uniform_profile(x, z_lines, std::move(y), name);
   clean_profile_lines(road.profile);
   road.description = "profile " + name;
-  return analyse(std::move(road), name, started);
+  return analyse(std::move(road), name, std::nullopt, started);
 }
 
 void write_road_outputs(const fs::path& out, const RoadRun& road) {
@@ -345,6 +360,8 @@ void write_road_outputs(const fs::path& out, const RoadRun& road) {
   write_texture_csv(staged.staging() / "texture.csv", texture);
   if (!road.target.empty()) write_texture_csv(staged.staging() / "target.csv", road.target);
   if (road.contact_law) write_surface_contact_law(staged.staging(), *road.contact_law);
+  if (!road.absorption_bands.empty()) write_absorption_csv(staged.staging() / "absorption.csv", road.absorption_bands);
+  if (!road.ground_effect.empty()) write_ground_effect_csv(staged.staging() / "ground_effect.csv", road.ground_effect);
   plot_road(staged.staging(), road, !road.target.empty());
   write_text_file(staged.staging() / "summary.json", road.summary.dump(2) + "\n");
   staged.commit();

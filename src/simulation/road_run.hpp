@@ -17,6 +17,7 @@
 #include "core/referenced_file.hpp"
 #include "road/profile_analysis.hpp"
 #include "road/profile_file.hpp"
+#include "simulation/road_acoustics.hpp"
 #include "simulation/surface_contact_law.hpp"
 
 namespace rollnoise {
@@ -41,6 +42,8 @@ struct RoadRunOptions {
   // The contact law of cells tiled over the road (surface_contact_law.hpp), over `width` and
   // `length`; a profile file's line is used across the width.
   std::optional<SurfaceContactLawOptions> contact_law;
+  // The ground effect of the surface on a point source at this geometry (road_acoustics.hpp).
+  std::optional<GroundEffectGeometry> ground_effect;
   ProgressSink* progress_sink = nullptr;
 };
 
@@ -51,6 +54,9 @@ struct RoadRun {
   ProfileAnalysis analysis;
   nlohmann::json summary;                         // what summary.json holds
   std::optional<SurfaceContactLaw> contact_law;   // with RoadRunOptions::contact_law
+  RoadAbsorption absorption;                      // the surface's [road.absorption]; rigid for a profile file
+  std::vector<AbsorptionBand> absorption_bands;   // an absorbing surface's, else empty
+  std::vector<GroundEffectBand> ground_effect;    // with RoadRunOptions::ground_effect
 };
 
 // Generates or reads the road and analyses it. Bad input is an InputError naming the input (and
@@ -65,7 +71,8 @@ RoadRun run_road_heights(std::vector<std::vector<double>> z_lines, double spacin
 
 // Writes road.csv, texture.csv (target.csv for a texture road), summary.json and the plots into
 // `out`, atomically (core/output_directory.hpp); with a contact law, contact_law.csv and
-// contact_laws.h5.
+// contact_laws.h5; for an absorbing surface absorption.csv; with a ground effect
+// ground_effect.csv.
 void write_road_outputs(const std::filesystem::path& out, const RoadRun& road);
 
 }  // namespace rollnoise

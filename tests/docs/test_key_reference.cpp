@@ -321,6 +321,13 @@ const std::vector<Probe>& case_probes() {
     for (const fs::path& file : library_surfaces())
       p.push_back(simulate("road surface " + file.filename().string(), {"[road]", road_heading(surface_type(file))},
                            "road", tyre_case("surface = " + quoted(file.string()) + "\n")));
+    // [road.absorption]: one porous layer of each model (a layer of `layers` takes the same keys).
+    const std::string layer = "porosity = 0.2\nflow_resistivity = 8000.0\ntortuosity = 3.5\nthickness = 0.045\n";
+    p.push_back(simulate("road absorption hamet_berengier", {"[road.absorption]"}, "road.absorption",
+                         point_case(flat + "[road.absorption]\nmodel = \"hamet_berengier\"\n" + layer)));
+    p.push_back(simulate("road absorption jca", {"[road.absorption]"}, "road.absorption",
+                         point_case(flat + "[road.absorption]\nmodel = \"jca\"\n" + layer +
+                                    "viscous_length = 1.0e-4\nthermal_length = 3.0e-4\n")));
     // [rolling], [radiation] and its receiver tables, [output].
     p.push_back(simulate("rolling (point model)", {"Point models"}, "rolling", point_case(flat)));
     p.push_back(simulate("rolling (tyre)", {"Tyre models"}, "rolling", tyre_case(flat)));

@@ -253,7 +253,8 @@ TEST(OutputReference, Calibrate) {
 }
 
 // A texture surface on three lines (target.csv, z_i, [about]); a long ISO 8608 road (the class
-// and G_d(n0)); a road shorter than one MPD segment (mpd_note); a measured laser profile.
+// and G_d(n0)); a road shorter than one MPD segment (mpd_note); a measured laser profile; a porous
+// road with its ground effect (absorption.csv, ground_effect.csv).
 TEST(OutputReference, Road) {
   Workspace ws;
   ws.write("uneven.toml", "type = \"iso8608\"\nclass = \"C\"\nseed = 3\n");
@@ -261,7 +262,9 @@ TEST(OutputReference, Road) {
       {"road", source_file("models/surfaces/chipseal.toml"), "--out", "texture", "--length", "1", "--lines", "3"},
       {"road", "uneven.toml", "--out", "uneven", "--length", "60", "--spacing", "0.001"},
       {"road", source_file("models/surfaces/dac11.toml"), "--out", "short", "--length", "0.05"},
-      {"road", source_file("data/surfaces/captif/20211011_aylesbury_dec_station_0.dat"), "--out", "laser"}};
+      {"road", source_file("data/surfaces/captif/20211011_aylesbury_dec_station_0.dat"), "--out", "laser"},
+      {"road", source_file("models/surfaces/pa16.toml"), "--out", "porous", "--length", "0.5", "--ground-effect",
+       "0.05,7.5,1.2"}};
   const std::string text = section("road");
   for (const auto& args : runs) {
     const RunResult r = ws.run(args);
@@ -271,6 +274,7 @@ TEST(OutputReference, Road) {
   EXPECT_TRUE(fs::exists(ws.path("texture") / "target.csv"));
   EXPECT_TRUE(read_json(ws.path("uneven") / "summary.json").contains("gd_n0_m3"));
   EXPECT_TRUE(read_json(ws.path("short") / "summary.json").contains("mpd_note"));
+  EXPECT_TRUE(fs::exists(ws.path("porous") / "ground_effect.csv"));
 }
 
 // A point model (green_time.csv), the plate (the circumference), a small two-layer tyre

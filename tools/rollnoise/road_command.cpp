@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <algorithm>
 #include <filesystem>
+#include <string>
 #include <thread>
 
 #include <CLI/CLI.hpp>
@@ -19,7 +20,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       "road",
       "Generate or read a road and analyse it: mean profile depth and ETD (ISO 13473-1), the third-octave\n"
       "texture spectrum (ISO 13473-4) and the unevenness class (ISO 8608). Writes road.csv, texture.csv,\n"
-      "summary.json, road.png and texture.png (with their gnuplot scripts).");
+      "summary.json, road.png and texture.png (with their gnuplot scripts); for a surface with [absorption],\n"
+      "absorption.csv (normal-incidence absorption and impedance per third-octave band).");
   cmd->add_option("input", options.input,
                   "A TOML file with a [road] table (a case), a surface file (models/surfaces/NAME.toml), or a "
                   "profile file: CSV (x,z or x,z_1,...), HDF5 height map, a laser profilometer export or line "
@@ -52,6 +54,12 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       ->delimiter(',')
       ->expected(2)
       ->check(positive_number());
+  cmd->add_option("--ground-effect", options.ground_effect,
+                  "Also write ground_effect.csv: the level of a point source over this surface minus that over a rigid "
+                  "road, per third-octave band 100 Hz-10 kHz, for the source height HS, horizontal distance D and "
+                  "receiver height HR (m), all > 0")
+      ->delimiter(',')
+      ->expected(3);
   cmd->add_flag("--force", options.force,
                 "Generate the road even when the estimate of its memory or output (--length / --spacing "
                 "× --lines) exceeds what the machine has");
@@ -60,7 +68,8 @@ CLI::App* add_road_command(CLI::App& app, RoadOptions& options) {
       "  rollnoise road models/surfaces/dac11.toml --out out/dac11\n"
       "  rollnoise road data/surfaces/captif/20211011_aylesbury_dec_station_0.dat\n"
       "  rollnoise road data/surfaces/captif-transverse/20231114_cpx_demo.csv\n"
-      "  rollnoise road models/surfaces/dac11.toml --length 1 --contact-law --tread-modulus 4e6 --cell 0.00194,0.007");
+      "  rollnoise road models/surfaces/dac11.toml --length 1 --contact-law --tread-modulus 4e6 --cell 0.00194,0.007\n"
+      "  rollnoise road models/surfaces/pa16.toml --ground-effect 0.05,7.5,1.2");
   return cmd;
 }
 
@@ -89,12 +98,17 @@ int run_road(const RoadOptions& options) {
     throw InputError("command line", options.cell.empty() ? "--tread-modulus" : "--cell",
                      "applies to --contact-law only");
   }
+  if (!options.ground_effect.empty())
+    run.ground_effect = GroundEffectGeometry{options.ground_effect[0], options.ground_effect[1], options.ground_effect[2]};
   const RoadRun road = rollnoise::run_road(run, out);
   write_road_outputs(out, road);
   char mpd[32] = "n/a";
   if (road.analysis.mpd) std::snprintf(mpd, sizeof mpd, "%.2f mm", road.analysis.mpd->mpd_m * 1000.0);
+  std::string extra = road.contact_law ? ", contact_law.csv, contact_laws.h5" : "";
+  if (!road.absorption_bands.empty()) extra += ", absorption.csv";
+  if (!road.ground_effect.empty()) extra += ", ground_effect.csv";
   std::printf("rollnoise: wrote %s (road.csv, texture.csv, summary.json and plots%s): MPD %s, RMS %.2f mm, skewness %+.2f\n",
-              out.string().c_str(), road.contact_law ? ", contact_law.csv, contact_laws.h5" : "", mpd,
+              out.string().c_str(), extra.c_str(), mpd,
               road.analysis.rms_m * 1000.0, road.analysis.skewness);
   return 0;
 }

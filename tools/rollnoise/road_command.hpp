@@ -27,6 +27,7 @@ struct RoadOptions {
   double tread_modulus = 0.0;         // Pa
   double tread_poisson = 0.48;
   std::vector<double> cell;           // DX, DY (m)
+  std::vector<double> ground_effect;  // --ground-effect HS,D,HR (m)
 };
 
 CLI::App* add_road_command(CLI::App& app, RoadOptions& options);
