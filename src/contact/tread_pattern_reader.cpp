@@ -111,6 +111,9 @@ std::optional<TreadPattern> read_tread_pattern(const ConfigTable& tyre, double r
                             "grooves (pitches or pitch_sequence with groove_width and groove_depth, ribs)");
     g.map = read_map(pattern, circumference, tread_width);
   } else {
+    if (!lateral)
+      for (const char* key : {"groove_width", "groove_depth", "groove_angle"})
+        if (pattern.contains(key)) pattern.fail(key, "applies to lateral grooves: give pitches or pitch_sequence too");
     if (!lateral && !pattern.contains("ribs"))
       tyre.fail("pattern", "needs lateral grooves (pitches or pitch_sequence, with groove_width and groove_depth), "
                            "circumferential grooves (ribs) or a tread map (file)");
@@ -137,9 +140,6 @@ std::optional<TreadPattern> read_tread_pattern(const ConfigTable& tyre, double r
                                          " along the circumference at groove_angle), not less than the shortest pitch, " +
                                          metres(shortest) + " (2πR = " + metres(circumference) +
                                          " over the pitches): a groove must be narrower than a pitch");
-    } else {
-      for (const char* key : {"groove_width", "groove_depth", "groove_angle"})
-        if (pattern.contains(key)) pattern.fail(key, "applies to lateral grooves: give pitches or pitch_sequence too");
     }
     if (pattern.contains("ribs")) g.ribs = read_ribs(pattern, tread_width);
   }
