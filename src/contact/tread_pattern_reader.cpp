@@ -70,9 +70,10 @@ TreadHeightMap read_map(const ConfigTable& pattern, double circumference, double
   const std::vector<double>& y = surface.y_lines();
   const std::size_t nx = x.size();
   const double spacing = (x.back() - x.front()) / static_cast<double>(nx - 1);
-  const std::string expected = "x from 0 to 2πR − Δx = " + metres(circumference - spacing) + " on N lines Δx = 2πR/N apart (2πR = " +
-                               metres(circumference) + ") and y across the tread from " + metres(-0.5 * tread_width) +
-                               " to " + metres(0.5 * tread_width);
+  const std::string expected = "x from 0 to 2πR − Δx on N lines Δx = 2πR/N apart once around the tyre (2πR = " +
+                               metres(circumference) + "; at this map's Δx = " + metres(spacing) + ", to " +
+                               metres(circumference - spacing) + ") and y across the tread from " +
+                               metres(-0.5 * tread_width) + " to " + metres(0.5 * tread_width);
   const std::string covers = "the map " + found.path.string() + " covers x from " + metres(x.front()) + " to " +
                              metres(x.back()) + " and y from " + metres(y.front()) + " to " + metres(y.back());
   constexpr double tolerance = 1e-4;  // relative, as CSV numbers are written to a few digits

@@ -50,7 +50,7 @@ TEST(PatternCli, BadPatternsAreOneMessageNamingTheFileAndTheKey) {
       {"groove_width = 0.005", {"[tyre.pattern] groove_width", "pitches"}},
       {"pitches = 64\ngroove_width = 0.005\ngroove_depth = 0.008\ngroove_angle = 85", {"groove_angle", "80"}},
       {"pitches = 64\ngroove_width = 0.005\ngroove_depth = 0.008\nzz_typo = 1", {"zz_typo", "unknown key"}},
-      {"file = \"map.csv\"", {"[tyre.pattern] file", "covers x from 0 to 1", "2πR"}},
+      {"file = \"map.csv\"", {"[tyre.pattern] file", "covers x from 0 m to 1 m", "2πR"}},
       {"file = \"map.csv\"\npitches = 8", {"[tyre.pattern] pitches", "file"}},
   };
   // A map 1 m around (not the tyre's 1.985 m) and across the tread.
