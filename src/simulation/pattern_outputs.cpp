@@ -18,7 +18,7 @@ void write_tread_pattern_map(const fs::path& dir, const TreadPattern& pattern, d
                              const std::string& title, PlotBatch* plots) {
   const double length = pattern.circumference();
   const auto around = static_cast<int>(std::lround(length / 0.002));
-  const int across = std::max(2, static_cast<int>(std::lround(tread_width / 0.001)));
+  const int across = std::max(2, static_cast<int>(std::lround(tread_width / 0.002)));
   const double ds = length / around, dy = tread_width / across;
   const fs::path path = dir / "tread_pattern.csv";
   std::ofstream out(path, std::ios::binary);

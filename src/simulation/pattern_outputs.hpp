@@ -20,7 +20,7 @@ namespace rollnoise {
 
 class PlotBatch;
 
-// tread_pattern.csv (s, y, height, m: 2 mm around by 1 mm across, one scan line per s) and, when
+// tread_pattern.csv (s, y, height, m: about 2 mm around and across, one scan line per s) and, when
 // `plots`, tread_pattern.gp / .png: the tread unrolled in four strips of a quarter turn each.
 void write_tread_pattern_map(const std::filesystem::path& dir, const TreadPattern& pattern, double tread_width,
                              const std::string& title, PlotBatch* plots);
