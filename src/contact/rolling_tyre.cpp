@@ -242,6 +242,10 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
   const bool texture_law = settings.contact_law == ContactLaw::texture;
   if (texture_law && nonlinear)
     throw std::invalid_argument("rolling tyre: the texture contact law and a nonlinear tread are alternatives");
+  // A cell's texture law presses all of its rubber onto the road's texture; a cell partly over a
+  // groove would need a law of its block's share, which the laws do not have.
+  if (texture_law && settings.pattern)
+    throw std::invalid_argument("rolling tyre: a tread pattern is not available with the texture contact law");
   const SteadyRolling steady = solve_steady_rolling(modes, local_compliance, settings.static_load, nonlinear);
 
   std::unique_ptr<HistoryEngine> engine;
@@ -381,6 +385,24 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     for (int j = 0; j < grid.lateral; ++j)
       for (std::size_t m = 0; m + 1 < road_positions; ++m)
         road_ring(static_cast<Eigen::Index>(m), j) = filtered_height(m, j);
+  // The tread pattern rides with the material, which passes the window with the road (no slip):
+  // column i at step n holds the material point s = x(0) + (i·p + n)·dx/p, the road's position,
+  // modulo the circumference 2πR = Nθ·dx, i.e. m = i·p + n modulo Nθ·p. Its heights are taken
+  // through the road's own taps along s and averaged over the cell across, once, for all Nθ·p
+  // positions of a turn: the loop only reads them (no allocation, one subtraction per point).
+  const auto pattern_positions = static_cast<std::size_t>(grid.circumferential) * static_cast<std::size_t>(substeps);
+  Eigen::MatrixXd pattern_ring;
+  if (settings.pattern) {
+    pattern_ring.resize(static_cast<Eigen::Index>(pattern_positions), grid.lateral);
+    for (int j = 0; j < grid.lateral; ++j)
+      for (std::size_t m = 0; m < pattern_positions; ++m) {
+        const double s = grid.x(0) + static_cast<double>(m) * grid.dx() / substeps, y = grid.y(j) - 0.5 * grid.width;
+        double sum = 0.0;
+        for (std::size_t k = 0; k < road_filter.offsets.size(); ++k)
+          sum += road_filter.weights[k] * settings.pattern->lateral_mean(s + road_filter.offsets[k], y, grid.dy());
+        pattern_ring(static_cast<Eigen::Index>(m), j) = sum;
+      }
+  }
   // Ctrl-C is polled every step, also when no progress is shown (a study's cases).
   const CancellationToken cancel;
   for (std::size_t n = 0; n < samples; ++n) {
@@ -416,6 +438,13 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       u0.noalias() += g0_skew * previous_force;
     }
     q = h - Eigen::VectorXd::Constant(points, steady.indentation) + u0 - r;
+    // A groove (pattern height < 0) widens the gap as a road valley does.
+    if (settings.pattern)
+      for (int j = 0; j < grid.lateral; ++j)
+        for (int i = 0; i < grid.window; ++i) {
+          const std::size_t m = static_cast<std::size_t>(i) * static_cast<std::size_t>(substeps) + n;
+          q(i + static_cast<Eigen::Index>(grid.window) * j) -= pattern_ring(static_cast<Eigen::Index>(m % pattern_positions), j);
+        }
     // The road moves one cell towards −x per cell of travel (every p steps), and the contacts
     // on its texture with it; the patch outline stays. Of the last active set, as it is or shifted by one cell, take
     // the one that agrees better with the points that penetrate now (q < 0). The contact

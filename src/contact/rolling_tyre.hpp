@@ -8,6 +8,7 @@
 // indentation d is the one for which ΣF_s = W. The run starts from that steady state (its
 // pre-history is part of u⁰), so a smooth road keeps F_s exactly and outputs have no start-up
 // transient.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "contact/history_engine.hpp"
 #include "contact/rolling_modes.hpp"
 #include "contact/texture_contact_laws.hpp"
+#include "contact/tread_pattern.hpp"
 
 namespace rollnoise {
 
@@ -73,6 +75,9 @@ struct TyreRunSettings {
   TreadRubber rubber = {};  // the texture law's rubber (E at the contact's time scale, ν)
   int law_threads = 1;  // threads that compute the laws before the run
   std::optional<std::filesystem::path> law_cache = {};  // where the laws are kept between runs (none: not kept)
+  // The tread pattern (tread_pattern.hpp), rotating with the tread through the window; none: a
+  // slick, and the run is exactly that of before. Not with the texture law.
+  std::shared_ptr<const TreadPattern> pattern = nullptr;
 };
 
 struct TyreContactTrace {

@@ -59,6 +59,7 @@ PlateTyre read_plate_tyre(const ConfigTable& tyre) {
   result.tread_width = tyre.positive("tread_width", p.width);
   if (result.tread_width > p.width) tyre.fail("tread_width", "must not exceed the belt width (" + std::to_string(p.width) + " m)");
   result.tread = read_tread(tyre);
+  tyre.contains("pattern");  // [tyre.pattern]: the tread pattern, read for rolling (contact/tread_pattern_reader.hpp)
   tyre.reject_unknown_keys();
   try {
     const KroppPlate check(p);

@@ -14,7 +14,7 @@ namespace rollnoise {
 ModalReceptanceTable read_tabulated_tyre(const ConfigTable& tyre) {
   namespace fs = std::filesystem;
   // Unknown keys first: a misspelt key is then reported as such, not as a missing one.
-  for (const std::string_view key : std::array<std::string_view, 2>{"model", "file"}) tyre.contains(key);
+  for (const std::string_view key : std::array<std::string_view, 3>{"model", "file", "pattern"}) tyre.contains(key);
   tyre.reject_unknown_keys();
   tyre.choice("model", {"tabulated"});
   if (!tyre.contains("file")) tyre.fail("file", "is required: the HDF5 file of the modal receptance table");

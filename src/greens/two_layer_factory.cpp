@@ -54,6 +54,7 @@ std::string_view named_key(const std::string& message, std::string_view fallback
 TwoLayerParameters read_two_layer_tyre(const ConfigTable& tyre) {
   // Unknown keys first: a misspelt key is then reported as such, not as a missing one.
   for (const std::string_view key : keys) tyre.contains(key);
+  tyre.contains("pattern");  // [tyre.pattern]: the tread pattern, read for rolling (contact/tread_pattern_reader.hpp)
   tyre.reject_unknown_keys();
   tyre.choice("model", {"two_layer"});
 

@@ -9,6 +9,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <thread>
 
@@ -16,6 +17,7 @@
 
 #include "contact/rolling_settings.hpp"
 #include "contact/rolling_tyre.hpp"
+#include "contact/tread_pattern_reader.hpp"
 #include "core/cache_limit.hpp"
 #include "core/case_file.hpp"
 #include "core/csv.hpp"
@@ -38,6 +40,7 @@
 #include "acoustics/band_power.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/greens_plots.hpp"
+#include "simulation/pattern_outputs.hpp"
 #include "simulation/run_size.hpp"
 #include "simulation/stage_times.hpp"
 #include "simulation/tyre_sound.hpp"
@@ -198,6 +201,15 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // are checked when it is made, after the model, since it needs the grid.
   RollingTyreSpec tyre_spec = read_rolling_tyre_spec(tyre);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
+  std::shared_ptr<const TreadPattern> pattern;
+  if (std::optional<TreadPattern> read = read_tread_pattern(tyre, model.radius, model.tread_width)) {
+    if (settings.contact_law == ContactLaw::texture)
+      throw InputError(tyre.source_of("pattern"), "[tyre.pattern]",
+                       "is not available with [rolling] contact_law = \"texture\": each cell's texture law presses "
+                       "the whole cell's rubber onto the road, where a cell over a groove has only its block's share; "
+                       "use contact_law = \"rigid\" (the default) with a pattern");
+    pattern = std::make_shared<const TreadPattern>(std::move(*read));
+  }
   const bool plots = output.boolean("plots", true);
   // What contact.h5 holds (tyre_step_outputs.hpp).
   const ContactFields fields = *contact_fields_from(output.choice("fields", {"contact", "all", "none"}, "contact"));
@@ -293,6 +305,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   TyreRunSettings run{settings.speed, settings.duration, settings.static_load, settings.history,
                       settings.road_sampling};
   run.contact_law = settings.contact_law;
+  run.pattern = pattern;
   if (run.contact_law == ContactLaw::texture) {
     if (!(model.tread_youngs_modulus > 0.0))
       throw InputError(tyre.source_of(model.model == "plate" ? "tread" : "tread_youngs_modulus"),
@@ -375,6 +388,9 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                                &plot_batch);
     if (!revolution.empty()) write_revolution(staged.staging(), revolution, dt * substeps, plot_batch);
   }
+  if (pattern)
+    write_tread_pattern_map(staged.staging(), *pattern, grid.contact_width(), model.model + " tyre",
+                            plots ? &plot_batch : nullptr);
 
   stages.lap("contact_outputs");
   const double mean_power = trace.input_power.mean();
@@ -400,6 +416,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                            {"fits_from_cache", model.fits_from_cache}};
   }
   summary["road"] = road->type();
+  if (pattern)
+    summary["tread_pattern"] = pattern_tones(
+        *pattern, std::span<const double>(trace.total_force.data(), static_cast<std::size_t>(trace.total_force.size())),
+        1.0 / dt, settings.speed);
   summary["contact_h5_fields"] = to_string(fields);
   summary["mean_total_force_N"] = trace.total_force.mean();
   summary["max_total_force_N"] = trace.total_force.maxCoeff();

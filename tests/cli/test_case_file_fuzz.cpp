@@ -23,6 +23,7 @@
 
 #include "contact/point_contact.hpp"
 #include "contact/rolling_settings.hpp"
+#include "contact/tread_pattern_reader.hpp"
 #include "core/case_file.hpp"
 #include "core/config_table.hpp"
 #include "core/error.hpp"
@@ -104,6 +105,8 @@ void check_one(const fs::path& file, const std::vector<std::string>& overrides,
     std::unique_ptr<rollnoise::GreensModel> model;
     // The plate tyre's readers (the tyre and its [rolling] keys) take the same bytes.
     if (guarded("read_plate_tyre", [&] { (void)rollnoise::read_plate_tyre(cases.section("tyre")); })) ++tally.models;
+    // The tread pattern's reader, against the 205/55 R16's circumference and tread width.
+    guarded("read_tread_pattern", [&] { (void)rollnoise::read_tread_pattern(cases.section("tyre"), 0.316, 0.14); });
     if (guarded("read_tyre_rolling_settings",
                 [&] { (void)rollnoise::read_tyre_rolling_settings(cases.section("rolling")); })) {
       ++tally.settings;

@@ -309,6 +309,16 @@ const std::vector<Probe>& case_probes() {
                                                "\n[tyre.tread]\ntype = " + quoted(type) + "\n" + keys +
                                                "\nzz_probe = 1\n"),
                            {}, "[tyre.tread] zz_probe"));
+    // [tyre.pattern] and its rib tables.
+    const std::string plate_file = "file = " + quoted(source("models/tyres/passenger_205_55R16.toml")) + "\n";
+    p.push_back(simulate("tread pattern", {"[tyre.pattern]"}, "tyre.pattern",
+                         tyre_case(flat, plate_file + "[tyre.pattern]\npitches = 8\ngroove_width = 0.005\n"
+                                                      "groove_depth = 0.005\nzz_probe = 1\n"),
+                         {}, "[tyre.pattern] zz_probe"));
+    p.push_back(simulate("rib table", {"Rib tables"}, "tyre.pattern.ribs",
+                         tyre_case(flat, plate_file + "[tyre.pattern]\n"
+                                                      "ribs = [{position = 0.0, width = 0.005, depth = 0.001, zz_probe = 1}]\n"),
+                         {}, "[tyre.pattern.ribs[1]] zz_probe"));
     // [road], per type, under a point model and under a tyre; and each library surface.
     for (const RoadType& road : road_types()) {
       const std::string table = "type = " + quoted(road.type) + "\n" + road.keys;

@@ -194,6 +194,17 @@ TEST(OutputReference, SimulateTyreWithSound) {
   EXPECT_GE(check_folder(ws.path("cache"), section("The cache folder"), "the cache"), 1u);
 }
 
+// A tyre with a tread pattern: its map and tones (a few steps, no sound).
+TEST(OutputReference, SimulateTyreWithPattern) {
+  Workspace ws;
+  const RunResult r = ws.run({"simulate", source_file("models/cases/plate_patterned_rough_80kmh.toml"), "--out", "tyre",
+                              "--set", "rolling.duration=0.002", "--set", "radiation.enabled=false"});
+  ASSERT_EQ(r.status, 0) << describe(r);
+  for (const char* file : {"tread_pattern.csv", "tread_pattern.gp"})
+    EXPECT_TRUE(fs::exists(ws.path("tyre") / file)) << file << " was expected from this case";
+  check_folder(ws.path("tyre"), section("simulate"), "simulate (patterned tyre)");
+}
+
 // A two-layer tyre: its mode fit in summary.json, and its table and fits in the cache.
 TEST(OutputReference, SimulateTwoLayerTyre) {
   Workspace ws;
