@@ -97,6 +97,7 @@ RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre) {
     spec.plate = read_plate_tyre(tyre);
     spec.radius = spec.plate->plate.radius;
     spec.width = spec.plate->plate.width;
+    spec.tread_width = spec.plate->tread_width;
     return spec;
   }
   reject_separate_tread(tyre, spec.model);
@@ -104,10 +105,12 @@ RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre) {
     spec.two_layer = std::make_shared<const TwoLayerParameters>(read_two_layer_tyre(tyre));
     spec.radius = spec.two_layer->radius;
     spec.width = spec.two_layer->width;
+    spec.tread_width = spec.two_layer->tread_width > 0.0 ? spec.two_layer->tread_width : spec.two_layer->width;
   } else {
     spec.table = read_tabulated_tyre(tyre);
     spec.radius = spec.table->radius;
     spec.width = spec.table->width;
+    spec.tread_width = spec.table->width;
   }
   return spec;
 }

@@ -61,6 +61,7 @@ struct RollingTyreSpec {
   std::string model;  // "plate" | "two_layer" | "tabulated"
   double radius = 0.0;
   double width = 0.0;
+  double tread_width = 0.0;  // the width that meets the road (RollingTyreModel::tread_width)
   std::optional<PlateTyre> plate;
   std::shared_ptr<const TwoLayerParameters> two_layer;  // (held by pointer: its header is heavy)
   std::optional<ModalReceptanceTable> table;  // tabulated: the file's table

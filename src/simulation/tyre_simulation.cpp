@@ -202,7 +202,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   RollingTyreSpec tyre_spec = read_rolling_tyre_spec(tyre);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   std::shared_ptr<const TreadPattern> pattern;
-  if (std::optional<TreadPattern> read = read_tread_pattern(tyre, model.radius, model.tread_width)) {
+  if (std::optional<TreadPattern> read = read_tread_pattern(tyre, tyre_spec.radius, tyre_spec.tread_width)) {
     if (settings.contact_law == ContactLaw::texture)
       throw InputError(tyre.source_of("pattern"), "[tyre.pattern]",
                        "is not available with [rolling] contact_law = \"texture\": each cell's texture law presses "
