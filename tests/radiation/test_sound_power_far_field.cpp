@@ -19,9 +19,9 @@
 //    edges against Butterworth band filters, and the power interpolated between anchors against
 //    the interpolated transfer (tyre_radiation.hpp). Measured within 0.31 dB from 315 Hz to
 //    1.6 kHz; 0.5 dB asserted. The untapered record's power counted the burst and was 1.8–6.2 dB
-//    above the microphones. (At 250 Hz the power is 0.9–1.1 dB above them: between the anchors
-//    at 200 and 300 Hz the power rises steeply and is interpolated linearly; +0.3 dB with
-//    anchors 25 Hz apart. Not this test's subject.)
+//    above the microphones. (At 250 Hz the power is 0.9–1.1 dB above them; with anchors 12.5 Hz
+//    apart the power moves by under 0.06 dB and the microphones by +0.57 dB, and the two still
+//    differ by +0.3 to +0.5 dB there and −0.5 to −0.6 dB at 315 Hz: docs/physics/radiation.md.)
 #include <algorithm>
 #include <cmath>
 #include <complex>
