@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 rollnoise=build/tools/rollnoise/rollnoise
 out=out/surface_library
 mkdir -p "$out"
-surfaces=(dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined)
+surfaces=(dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined captif_fine)
 for s in "${surfaces[@]}"; do
   "$rollnoise" road "models/surfaces/$s.toml" --out "$out/$s"
 done
@@ -45,7 +45,7 @@ set title 'Texture level spectra of the surface library (ISO 13473-4, analysed b
 set xlabel 'texture wavelength (mm)'
 set ylabel 'L_tx (dB re 1 um)'
 set key outside right
-surfaces = 'dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined'
+surfaces = 'dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined captif_fine'
 measured = 'captif_0 captif_1 captif_transverse'
 plot for [s in surfaces] 'texture_spectra.csv' using (strcol(1) eq s ? $2*1000 : 1/0):3 \
        with linespoints pt 7 ps 0.6 title s, \

@@ -10,7 +10,7 @@ set title 'Texture level spectra of the surface library (ISO 13473-4, analysed b
 set xlabel 'texture wavelength (mm)'
 set ylabel 'L_tx (dB re 1 um)'
 set key outside right
-surfaces = 'dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined'
+surfaces = 'dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined captif_fine'
 measured = 'captif_0 captif_1 captif_transverse'
 plot for [s in surfaces] 'texture_spectra.csv' using (strcol(1) eq s ? $2*1000 : 1/0):3 \
        with linespoints pt 7 ps 0.6 title s, \
