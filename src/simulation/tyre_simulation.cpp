@@ -45,6 +45,7 @@
 #include "simulation/stage_times.hpp"
 #include "simulation/tyre_sound.hpp"
 #include "simulation/tyre_step_outputs.hpp"
+#include "simulation/tyre_run_summary.hpp"
 
 namespace rollnoise {
 namespace fs = std::filesystem;
@@ -393,93 +394,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                             plots ? &plot_batch : nullptr);
 
   stages.lap("contact_outputs");
-  const double mean_power = trace.input_power.mean();
-  nlohmann::json summary;
-  summary["case"] = file.name();
-  summary["paths_outside_case_folder"] = file.paths_outside_folder();  // via ".." or a symlink
-  summary["model"] = model.model;
-  summary["tread"] = !model.tread                                         ? "included in the model"
-                     : model.tread->type == TreadSettings::Type::winkler   ? "winkler"
-                     : model.tread->type == TreadSettings::Type::halfspace ? "halfspace"
-                                                                           : "nonlinear";
-  if (model.fit) {
-    summary["mode_fit"] = {{"modes", model.fit->modes},
-                           {"poles", model.fit->poles},
-                           {"unconverged_modes", model.fit->unconverged},
-                           {"worst_relative_rms_error", model.fit->worst_rms_error},
-                           {"mean_relative_rms_error", model.fit->mean_rms_error},
-                           {"worst_relative_max_error", model.fit->worst_max_error},
-                           {"worst_mode", {model.fit->worst_order, model.fit->worst_lateral_order}},
-                           {"fit_time_s", model.fit->seconds},
-                           {"table_time_s", model.table_seconds},
-                           {"table_from_cache", model.table_from_cache},
-                           {"fits_from_cache", model.fits_from_cache}};
-  }
-  summary["road"] = road->type();
-  if (pattern)
-    summary["tread_pattern"] = pattern_tones(
-        *pattern, std::span<const double>(trace.total_force.data(), static_cast<std::size_t>(trace.total_force.size())),
-        1.0 / dt, settings.speed);
-  summary["contact_h5_fields"] = to_string(fields);
-  summary["mean_total_force_N"] = trace.total_force.mean();
-  summary["max_total_force_N"] = trace.total_force.maxCoeff();
-  summary["min_total_force_N"] = trace.total_force.minCoeff();
-  summary["mean_contact_area_m2"] = trace.contact_area.mean();
-  summary["patch_length_m"] = trace.contact_length.mean();
-  summary["patch_width_m"] = trace.contact_width.mean();
-  summary["rolling_resistance_N"] = mean_power / settings.speed;
-  summary["steady_rolling_resistance_N"] = trace.steady_rolling_resistance;
-  summary["indentation_m"] = trace.indentation;
-  summary["history_engine"] = trace.engine;
-  summary["lcp_iterations"] = summarise_iterations(trace.lcp_iterations);
-  summary["state_changes"] = summarise_iterations(trace.state_changes);
-  const ContactMatrixStructure& g0 = trace.contact_matrix;
-  summary["contact_matrix"] = {{"diagonal_dominance_min", g0.diagonal_dominance_min},
-                               {"diagonal_dominance_median", g0.diagonal_dominance_median},
-                               {"offsets_cells", g0.offsets},
-                               {"decay_x", g0.decay_x},
-                               {"decay_y", g0.decay_y},
-                               {"translation_variance", g0.translation_variance},
-                               {"skewness", g0.skewness}};
-  summary["contact_matrix_skewness"] = trace.contact_matrix_skewness;
-  summary["lagged_skew_growth"] = trace.lagged_skew_growth;
-  summary["contact_step"] = trace.skew_part_lagged ? "symmetric LCP, G0's skew part one step late"
-                                                   : "P-matrix LCP with the whole G0";
-  if (settings.contact_law == ContactLaw::texture) {
-    summary["contact_step"] = trace.skew_part_lagged
-                                  ? "texture laws in series (Newton over contact sets), G0's skew part one step late"
-                                  : "texture laws in series (Newton over contact sets) with the whole G0";
-    summary["texture_contact_law"] = {{"cells", trace.law_cells},
-                                      {"pixels_along", trace.law_pixels.nx},
-                                      {"pixels_across", trace.law_pixels.ny},
-                                      {"road_samples_per_pixel", trace.law_pixels.samples},
-                                      {"pixel_m", grid.dx() / static_cast<double>(trace.law_pixels.nx)},
-                                      {"tread_youngs_modulus_Pa", model.tread_youngs_modulus},
-                                      {"tread_poisson_ratio", model.tread_poisson_ratio},
-                                      {"force_cap_N", trace.law_force_cap},
-                                      {"largest_cell_force_N", trace.largest_cell_force},
-                                      {"seconds", trace.law_seconds},
-                                      {"from_cache", trace.laws_from_cache}};
-  }
-  summary["grid"] = {{"points_circumferential", grid.circumferential},
-                     {"points_lateral", grid.lateral},
-                     {"contact_window_points", grid.window},
-                     {"dx_m", grid.dx()},
-                     {"dy_m", grid.dy()},
-                     {"contact_points", grid.points()}};
-  summary["settings"] = {{"speed_m_per_s", settings.speed},
-                         {"duration_s", settings.duration},
-                         {"time_step_s", dt},
-                         {"substeps", substeps},
-                         {"road_sampling", settings.road_sampling == RoadSampling::point       ? "point"
-                                           : settings.road_sampling == RoadSampling::lowpass ? "lowpass"
-                                                                                             : "cell_mean"},
-                         {"contact_law", settings.contact_law == ContactLaw::texture ? "texture" : "rigid"},
-                         {"band_top_hz", settings.band_top},
-                         {"contact_nyquist_hz", 0.5 / dt},
-                         {"steps", steps},
-                         {"static_load_N", settings.static_load},
-                         {"history", to_string(settings.history)}};
+  TyreRunFacts facts{file, model, grid, settings, road->type(), pattern.get(), fields, dt, substeps, steps};
+  nlohmann::json summary = tyre_contact_summary(facts, trace);
   bool budget_written = false;
   if (sound.enabled) {
     std::unique_ptr<TyreBudget> budget;
