@@ -185,6 +185,52 @@ int circumferential_points(const TyreRollingSettings& settings, const RollingTyr
   return std::max({needed, 512, 2 * model.modes->orders()});
 }
 
+// The contact grid of a run: the cells around (circumferential_points) and across, the window.
+TyreGrid tyre_grid(const TyreRollingSettings& settings, const RollingTyreModel& model, const ConfigTable& rolling) {
+  TyreGrid grid;
+  grid.radius = model.radius;
+  grid.width = model.width;
+  grid.circumferential = circumferential_points(settings, model, rolling);
+  grid.lateral = settings.points_lateral;
+  grid.crown_radius = model.crown_radius;
+  grid.tread_width = model.tread_width;
+  grid.window = std::max(2, static_cast<int>(std::lround(settings.contact_window / grid.dx())));
+  try {
+    grid.validate();
+  } catch (const std::invalid_argument& error) {
+    throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
+  }
+  return grid;
+}
+
+// What the run will hold and write, for its estimate (run_size.hpp): every engine and output.
+TyreRunSize tyre_run_size(const TyreGrid& grid, const RollingModes& rolling_modes, const TyreRollingSettings& settings,
+                          const TyreSoundSettings& sound, ContactFields fields, std::size_t steps, double dt,
+                          bool stream_sound) {
+  TyreRunSize size;
+  size.samples = steps + 1;
+  size.window_points = static_cast<std::uint64_t>(grid.points());
+  size.window_columns = static_cast<std::uint64_t>(grid.window);
+  size.lateral = static_cast<std::uint64_t>(grid.lateral);
+  size.circumferential = static_cast<std::uint64_t>(grid.circumferential);
+  size.direct_history = settings.history == HistoryKind::direct;
+  for (Eigen::Index r = 0; r < static_cast<Eigen::Index>(rolling_modes.lateral_modes()) * (rolling_modes.orders() + 1); ++r)
+    size.modal_poles += rolling_modes.mode(r).size();
+  size.radiating = sound.enabled;
+  if (sound.enabled) {
+    TyreRadiationSettings radiation = sound.radiation;
+    radiation.sample_rate_hz = 1.0 / dt;
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    size.radiation_solve_bytes =
+        radiation_solve_bytes(radiation, radiation.threads > 0 ? static_cast<std::size_t>(radiation.threads) : cores);
+  }
+  size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;
+  size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;
+  size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
+  size.fields = fields;
+  return size;
+}
+
 }  // namespace
 
 CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::chrono::steady_clock::time_point started,
@@ -228,19 +274,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // version's larger entries) is trimmed before the run adds to it.
   if (options.cache) keep_cache_within(*options.cache, sound.cache_limit);
 
-  TyreGrid grid;
-  grid.radius = model.radius;
-  grid.width = model.width;
-  grid.circumferential = circumferential_points(settings, model, rolling);
-  grid.lateral = settings.points_lateral;
-  grid.crown_radius = model.crown_radius;
-  grid.tread_width = model.tread_width;
-  grid.window = std::max(2, static_cast<int>(std::lround(settings.contact_window / grid.dx())));
-  try {
-    grid.validate();
-  } catch (const std::invalid_argument& error) {
-    throw InputError(rolling.source_of("contact_window"), "[rolling]", error.what());
-  }
+  const TyreGrid grid = tyre_grid(settings, model, rolling);
   // Sub-steps per cell so that the contact steps carry the band_top band (rolling_settings.hpp).
   const int substeps = substeps_for_band(settings.band_top, grid.dx(), settings.speed);
   const double dt = grid.dx() / (substeps * settings.speed);
@@ -261,30 +295,10 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // step after `duration`: the road must reach the last step's position.
   if (!(settings.duration / dt < 1e15)) rolling.fail("duration", "gives more than 1e15 time steps; shorten it");
   const auto steps = static_cast<std::size_t>(std::llround(settings.duration / dt));
-  TyreRunSize size;
-  size.samples = steps + 1;
-  size.window_points = static_cast<std::uint64_t>(grid.points());
-  size.window_columns = static_cast<std::uint64_t>(grid.window);
-  size.lateral = static_cast<std::uint64_t>(grid.lateral);
-  size.circumferential = static_cast<std::uint64_t>(grid.circumferential);
-  size.direct_history = settings.history == HistoryKind::direct;
-  for (Eigen::Index r = 0; r < static_cast<Eigen::Index>(rolling_modes->lateral_modes()) * (rolling_modes->orders() + 1); ++r)
-    size.modal_poles += rolling_modes->mode(r).size();
-  size.radiating = sound.enabled;
-  if (sound.enabled) {
-    TyreRadiationSettings radiation = sound.radiation;
-    radiation.sample_rate_hz = 1.0 / dt;
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    size.radiation_solve_bytes =
-        radiation_solve_bytes(radiation, radiation.threads > 0 ? static_cast<std::size_t>(radiation.threads) : cores);
-  }
   // A run longer than a block streams the tread velocity through the radiation (issue 13).
   const bool stream_sound = sound.enabled && TyreSoundStream::wanted(steps + 1, 1.0 / dt);
-  size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;
-  size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;
-  size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
-  size.fields = fields;
-  check_run_fits(estimate_tyre_run(size, file.name()), available_memory_bytes(), available_disk_bytes(out), options.force);
+  check_run_fits(estimate_tyre_run(tyre_run_size(grid, *rolling_modes, settings, sound, fields, steps, dt, stream_sound), file.name()),
+                 available_memory_bytes(), available_disk_bytes(out), options.force);
   stages.lap("model_and_grid");
   const double travel = settings.speed * dt * static_cast<double>(steps);
   // Road y is measured from the wheel's centre line.
