@@ -333,7 +333,8 @@ def simulate(case, set=None, out=None, cache=True, force=False, progress=None):
             _shutil.rmtree(temporary, ignore_errors=True)
 
 
-def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16, force=False, progress=None):
+def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16, force=False, progress=None,
+         ground_effect=None):
     """Generate or read a road and analyse its texture (ISO 13473-1, -4; ISO 8608).
 
     What `rollnoise road INPUT` does, through the same library function.
@@ -365,6 +366,10 @@ def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16
         Generate the road even when the estimate of its size exceeds what the machine has.
     progress : callable, optional
         progress(stage, done, total) while a generated road is sampled.
+    ground_effect : (float, float, float), optional
+        (source height, horizontal distance, receiver height), m, all > 0: the level of a point
+        source over this surface minus that over a rigid road, per third octave (what
+        `--ground-effect HS,D,HR` writes to ground_effect.csv). TOML input only.
 
     Returns
     -------
@@ -375,6 +380,10 @@ def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16
         mpd_m, etd_m : float or None    mean profile depth and estimated texture depth, m
         texture : dict                  'wavelength_m' and 'Ltx_dB' (dB re 1 µm), texture.csv
         target : dict                   a texture road's target levels, as texture (else empty)
+        absorption : dict               an absorbing surface's 'band_hz', 'alpha', 'z_re', 'z_im'
+                                        (absorption.csv; empty for a rigid one)
+        ground_effect : dict            with ground_effect: 'band_hz', 'delta_dB', 'delta_band_dB'
+                                        (ground_effect.csv; else empty)
         summary : dict                  summary.json
         out : str or None
 
@@ -385,15 +394,22 @@ def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16
             raise _input_error("heights", "spacing", "give the heights' sample spacing in m (spacing=...)")
         if set:
             raise _input_error("heights", "set", "applies to a TOML road; heights have no keys to set")
+        if ground_effect is not None:
+            raise _input_error("heights", "ground_effect", "needs a surface with [road.absorption]; heights are rigid")
         z = _np.asarray(road, dtype=float)
         answer = _rollnoise.road_heights(z, float(spacing), [], "heights", _folder(out))
     else:
         kind, value, name = _source(road, "road")
         if kind == "dict" and "road" not in value:
             value = {"road": value}
+        if ground_effect is not None:
+            ground_effect = [float(v) for v in ground_effect]
+            if len(ground_effect) != 3:
+                raise _input_error(name, "ground_effect", "give (source height, horizontal distance, receiver height) in m, each > 0")
         answer = _rollnoise.road(
             kind, value, name, _overrides(set), float(length),
             None if spacing is None else float(spacing), int(lines), float(width), bool(force), _folder(out), progress,
+            ground_effect,
         )
     summary = _json.loads(answer["summary"])
     target = {}
@@ -407,6 +423,10 @@ def road(road, set=None, out=None, length=7.0, spacing=None, lines=1, width=0.16
         etd_m=summary["etd_m"],
         texture={"wavelength_m": answer["wavelength_m"], "Ltx_dB": answer["Ltx_dB"]},
         target=target,
+        absorption={} if len(answer["alpha"]) == 0 else {
+            "band_hz": answer["absorption_band_hz"], "alpha": answer["alpha"], "z_re": answer["z_re"], "z_im": answer["z_im"]},
+        ground_effect={} if len(answer["delta_dB"]) == 0 else {
+            "band_hz": answer["ground_band_hz"], "delta_dB": answer["delta_dB"], "delta_band_dB": answer["delta_band_dB"]},
         summary=summary,
         out=None if out is None else _os.fspath(out),
     )

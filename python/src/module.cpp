@@ -8,6 +8,8 @@
 //    RunCancellation: the staging folder is removed, nothing is half-written) and raises it;
 //  - InputError becomes rollnoise.InputError (a ValueError) and OutputError rollnoise.OutputError
 //    (an OSError), with the command line's message.
+#include <array>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -291,14 +293,42 @@ py::dict road_answer(const RoadRun& road) {
   answer["target_wavelength_m"] =
       py::array_t<double>(static_cast<py::ssize_t>(target_wavelength.size()), target_wavelength.data());
   answer["target_Ltx_dB"] = py::array_t<double>(static_cast<py::ssize_t>(target_level.size()), target_level.data());
+  // An absorbing surface's bands (absorption.csv) and, when asked, the ground effect
+  // (ground_effect.csv); empty arrays otherwise.
+  std::vector<double> band, alpha, z_re, z_im;
+  for (const AbsorptionBand& b : road.absorption_bands) {
+    band.push_back(b.band_hz);
+    alpha.push_back(b.alpha);
+    z_re.push_back(b.impedance.real());
+    z_im.push_back(b.impedance.imag());
+  }
+  const auto array = [](const std::vector<double>& v) { return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data()); };
+  answer["absorption_band_hz"] = array(band);
+  answer["alpha"] = array(alpha);
+  answer["z_re"] = array(z_re);
+  answer["z_im"] = array(z_im);
+  std::vector<double> ground_band, delta, delta_band;
+  for (const GroundEffectBand& b : road.ground_effect) {
+    ground_band.push_back(b.band_hz);
+    delta.push_back(b.delta_db);
+    delta_band.push_back(b.delta_band_db);
+  }
+  answer["ground_band_hz"] = array(ground_band);
+  answer["delta_dB"] = array(delta);
+  answer["delta_band_dB"] = array(delta_band);
   answer["summary"] = road.summary.dump();
   return answer;
 }
 
 py::dict py_road(const std::string& kind, const py::object& value, const std::string& name,
               const std::vector<std::string>& overrides, double length, std::optional<double> spacing, int lines,
-              double width, bool force, const std::string& out, const py::object& progress) {
+              double width, bool force, const std::string& out, const py::object& progress,
+              const std::optional<std::array<double, 3>>& ground_effect) {
   RoadRunOptions options;
+  if (ground_effect) {
+    options.ground_effect = GroundEffectGeometry{(*ground_effect)[0], (*ground_effect)[1], (*ground_effect)[2]};
+    check_ground_effect_geometry(*options.ground_effect, name, "ground_effect");
+  }
   options.input = kind == "path" ? value.cast<std::string>() : name;
   options.toml = toml_of(kind, value, name);
   options.overrides = overrides;
@@ -544,7 +574,8 @@ PYBIND11_MODULE(_rollnoise, m) {
   m.def("simulate", &py_simulate, py::arg("kind"), py::arg("value"), py::arg("name"), py::arg("overrides"),
         py::arg("out"), py::arg("cache"), py::arg("force"), py::arg("progress"));
   m.def("road", &py_road, py::arg("kind"), py::arg("value"), py::arg("name"), py::arg("overrides"), py::arg("length"),
-        py::arg("spacing"), py::arg("lines"), py::arg("width"), py::arg("force"), py::arg("out"), py::arg("progress"));
+        py::arg("spacing"), py::arg("lines"), py::arg("width"), py::arg("force"), py::arg("out"), py::arg("progress"),
+        py::arg("ground_effect"));
   m.def("road_heights", &py_road_heights, py::arg("z"), py::arg("spacing"), py::arg("y"), py::arg("name"), py::arg("out"));
   m.def("analyse_file", &py_analyse_file, py::arg("path"), py::arg("full_scale"), py::arg("out"));
   m.def("analyse_signals", &py_analyse_signals, py::arg("signals"), py::arg("names"), py::arg("sample_rate"),

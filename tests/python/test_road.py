@@ -68,3 +68,29 @@ def test_a_road_dict_is_its_surface_file():
     np.testing.assert_array_equal(from_dict.texture["Ltx_dB"], from_file.texture["Ltx_dB"])
     sine = rollnoise.road({"type": "sine", "amplitude": 1e-3, "wavelength": 0.05}, length=1.0)
     np.testing.assert_allclose(sine.z[0], 1e-3 * np.sin(2 * np.pi * sine.x / 0.05), atol=1e-12)
+
+
+PA16 = SOURCE / "models" / "surfaces" / "pa16.toml"
+
+
+def test_an_absorbing_surface_and_its_ground_effect_as_the_command_line_writes_them(tmp_path):
+    run_cli("road", PA16, "--length", "0.3", "--ground-effect", "0.05,7.5,1.2", "--out", tmp_path / "cli")
+    result = rollnoise.road(PA16, length=0.3, ground_effect=(0.05, 7.5, 1.2))
+    absorption = read_columns(tmp_path / "cli" / "absorption.csv")
+    for key in ("band_hz", "alpha", "z_re", "z_im"):
+        np.testing.assert_array_equal(result.absorption[key], absorption[key])
+    ground = read_columns(tmp_path / "cli" / "ground_effect.csv")
+    for key in ("band_hz", "delta_dB", "delta_band_dB"):
+        np.testing.assert_array_equal(result.ground_effect[key], ground[key])
+    assert rollnoise.road(DAC11, length=0.3).absorption == {}  # a rigid surface
+    assert rollnoise.road(DAC11, length=0.3).ground_effect == {}
+
+
+def test_a_ground_effect_geometry_must_be_three_positive_lengths():
+    for geometry in ((0.05, 7.5), (0.05, -7.5, 1.2)):
+        try:
+            rollnoise.road(PA16, length=0.3, ground_effect=geometry)
+        except rollnoise.InputError as error:
+            assert "ground_effect" in str(error)
+        else:
+            raise AssertionError(f"{geometry} was accepted")
