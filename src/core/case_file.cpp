@@ -179,6 +179,7 @@ void CaseFile::merge_library_file(const std::string& section, const std::string&
   }
   toml::table library = parse_toml_file(file_path);
   outside_->note(where, key_source, named, found);
+  (section == "tyre" ? tyre_file_ : surface_file_) = named;
   // Keys beside `key` override the library file's, key by key also inside tables such as
   // [tyre.tread] (so `--set tyre.tread.stiffness_per_area=…` keeps the file's tread type).
   table->erase(key);

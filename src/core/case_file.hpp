@@ -66,6 +66,11 @@ class CaseFile {
   // the summary ("paths_outside_case_folder").
   std::vector<PathOutsideCaseFolder> paths_outside_folder() const { return outside_->entries(); }
 
+  // The library files merged in, as named (after --set): `[tyre] file` and `[road] surface`
+  // ("" when the case gave its keys inline), for the summary.
+  const std::string& tyre_file() const noexcept { return tyre_file_; }
+  const std::string& surface_file() const noexcept { return surface_file_; }
+
  private:
   CaseFile(std::filesystem::path path, toml::table root);
   void apply_overrides(const std::vector<std::string>& overrides, const std::string& prefix);
@@ -78,6 +83,7 @@ class CaseFile {
   toml::table empty_;
   std::shared_ptr<Provenance> provenance_;
   std::shared_ptr<PathsOutsideCaseFolder> outside_;
+  std::string tyre_file_, surface_file_;
 };
 
 // find_referenced_file(...).path (core/referenced_file.hpp): the file a case file names.

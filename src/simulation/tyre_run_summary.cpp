@@ -12,6 +12,8 @@ nlohmann::json tyre_contact_summary(const TyreRunFacts& f, const TyreContactTrac
   nlohmann::json summary;
   summary["case"] = f.file.name();
   summary["paths_outside_case_folder"] = f.file.paths_outside_folder();  // via ".." or a symlink
+  summary["tyre_file"] = f.file.tyre_file();        // as the case (or --set tyre.file) named it
+  summary["surface_file"] = f.file.surface_file();  // likewise [road] surface
   summary["model"] = f.model.model;
   summary["tread"] = !f.model.tread                                         ? "included in the model"
                      : f.model.tread->type == TreadSettings::Type::winkler   ? "winkler"

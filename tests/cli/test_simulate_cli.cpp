@@ -215,6 +215,13 @@ TEST(SimulateCli, PlateTyreWritesTotalsFieldsSummaryAndPlots) {
     EXPECT_TRUE(summary.contains(key) && summary[key].is_number()) << key;
   }
   EXPECT_EQ(summary["history_engine"], "modal");  // auto picks the modal engine for the plate
+  // The library files, as named: the case's, and --set's over it.
+  EXPECT_EQ(summary["tyre_file"], model);
+  EXPECT_EQ(summary["surface_file"], (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "surfaces" / "dac11.toml").string());
+  const std::string other = (fs::path(ROLLNOISE_SOURCE_DIR) / "models" / "tyres" / "passenger_205_55R16_patterned.toml").string();
+  const RunResult set = ws.run({"simulate", "tyre.toml", "--out", "set", "--set", "tyre.file=" + other});
+  ASSERT_EQ(set.status, 0) << describe(set);
+  EXPECT_EQ(read_json(ws.path("set") / "summary.json")["tyre_file"], other);
   EXPECT_GT(fs::file_size(ws.path("tyre") / "contact.h5"), 100000u);
   // The HDF5 signature: the file is HDF5, not a stub.
   EXPECT_EQ(read_text(ws.path("tyre") / "contact.h5").substr(0, 8), std::string("\x89HDF\r\n\x1a\n"));
