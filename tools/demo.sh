@@ -23,7 +23,9 @@ build/tools/rollnoise/rollnoise calibrate models/tyres/passenger_205_55R16.toml 
 calibration=$!
 trap 'kill "$calibration" 2>/dev/null || true; rm -f "$calibration_log"' EXIT
 
-for case in models/cases/larsson2000_*.toml models/cases/plate_*.toml; do
+# The runs of docs/getting-started.md's table, named: a glob would take every case added later.
+for case in models/cases/larsson2000_*.toml models/cases/plate_rough_80kmh.toml models/cases/plate_cleat_50kmh.toml \
+    models/cases/plate_smooth_80kmh.toml; do
   name=$(basename "$case" .toml)
   build/tools/rollnoise/rollnoise simulate "$case" --out "$out/$name"
 done
