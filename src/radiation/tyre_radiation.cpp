@@ -87,9 +87,8 @@ void run_in_parallel(const std::vector<std::size_t>& order, std::size_t workers,
   if (failure) std::rethrow_exception(failure);
 }
 
-std::size_t workers_for(std::size_t anchors, int threads) {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::max<std::size_t>(1, std::min<std::size_t>(anchors, threads > 0 ? static_cast<std::size_t>(threads) : cores));
+std::size_t workers_for(std::size_t anchors, const TyreRadiationSettings& settings) {
+  return std::max<std::size_t>(1, std::min(anchors, radiation_thread_limit(settings)));
 }
 
 // The anchors, those on the finest meshes first (stable: in order within a mesh).
@@ -126,6 +125,11 @@ void digest_points(FnvDigest& d, const Eigen::Matrix3Xd& m) {
 }
 
 }  // namespace
+
+std::size_t radiation_thread_limit(const TyreRadiationSettings& settings) {
+  return settings.threads > 0 ? static_cast<std::size_t>(settings.threads)
+                              : std::max<std::size_t>(1, std::thread::hardware_concurrency());
+}
 
 EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium, bool combined) {
   std::optional<CombinedSources> layer;
@@ -286,7 +290,7 @@ void TyreRadiation::for_each_anchor(const std::vector<double>& anchor, Eigen::In
   // The costliest (finest) first, so that the threads finish together; the results go to
   // their anchors' places whatever the order.
   std::size_t finished = 0;
-  run_in_parallel(costliest_first(anchor, [&](double f) { return level_of(f); }), workers_for(anchor.size(), settings_.threads),
+  run_in_parallel(costliest_first(anchor, [&](double f) { return level_of(f); }), workers_for(anchor.size(), settings_),
                   solve_anchor, [&] {
                     ++finished;
                     // May throw Interrupted (Ctrl-C): stops every worker like a failure.
@@ -502,7 +506,7 @@ TyreRadiationStream::TyreRadiationStream(const TyreRadiation& radiation, Eigen::
                             });
   for (const char c : from_cache_of) out_.anchor_from_cache.push_back(c != 0);
   order_ = costliest_first(anchor_, [&](double f) { return radiation.level_of(f); });
-  workers_ = workers_for(anchor_.size(), radiation.settings_.threads);
+  workers_ = workers_for(anchor_.size(), radiation.settings_);
 
   out_.sample_rate = sample_rate;
   out_.lowest_hz = anchor_.front();

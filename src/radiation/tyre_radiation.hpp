@@ -87,6 +87,9 @@ struct TyreRadiationSettings {
   int threads = 0;                    // parallel anchor solves; 0: the machine's cores
 };
 
+// The most threads the anchors are solved on: `threads`, or the machine's cores when it is 0.
+std::size_t radiation_thread_limit(const TyreRadiationSettings& settings);
+
 struct RadiatedSound {
   double sample_rate = 0.0;       // Hz, that of the velocities
   double lowest_hz = 0.0;         // the band that was computed

@@ -1,7 +1,6 @@
 #include "simulation/tyre_simulation.hpp"
 
 #include <algorithm>
-#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -32,7 +31,6 @@
 #include "greens/rolling_tyre_model.hpp"
 #include "greens/tread_compliance.hpp"
 #include "road/road_surface.hpp"
-#include "simulation/point_contact_output.hpp"
 #include "core/hdf5_writer.hpp"
 #include "radiation/belt_sampling.hpp"
 #include "radiation/tyre_surface_mesh.hpp"
@@ -220,9 +218,7 @@ TyreRunSize tyre_run_size(const TyreGrid& grid, const RollingModes& rolling_mode
   if (sound.enabled) {
     TyreRadiationSettings radiation = sound.radiation;
     radiation.sample_rate_hz = 1.0 / dt;
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    size.radiation_solve_bytes =
-        radiation_solve_bytes(radiation, radiation.threads > 0 ? static_cast<std::size_t>(radiation.threads) : cores);
+    size.radiation_solve_bytes = radiation_solve_bytes(radiation, radiation_thread_limit(radiation));
   }
   size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;
   size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;

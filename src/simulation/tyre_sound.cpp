@@ -7,7 +7,6 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "acoustics/band_power.hpp"
 #include "acoustics/fractional_octave_bands.hpp"
@@ -267,8 +266,7 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
                          {"cache", settings.cache_folder ? settings.cache_folder->string() : std::string()},
                          // The threads the anchors were solved on, at most ([radiation] threads, or
                          // what the study gave this case, else one per core).
-                         {"threads", settings.radiation.threads > 0 ? static_cast<unsigned>(settings.radiation.threads)
-                                                                    : std::max(1u, std::thread::hardware_concurrency())},
+                         {"threads", radiation_thread_limit(settings.radiation)},
                          {"time_s", radiation_seconds}};
   stages.lap("sound_summary");
   result["sound_stage_times_s"] = stages.json();  // tyre_simulation.cpp folds it into stage_times_s
