@@ -140,12 +140,10 @@ struct Translation {
   TranslationSpectrum gaussian;
 };
 
-Translation calibrate_map_and_spectrum(const RecordTexture& record, const std::vector<double>& surface_levels,
-                                       double spacing, bool isotropic) {
-  std::vector<double> target;
-  for (const auto& line : record.band_passed) target.insert(target.end(), line.begin(), line.end());
-  const HeightDistribution record_distribution(target);
-  const HeightMoments wanted = record_distribution.moments();
+// `pooled`: the record's band-passed heights, all lines; `wanted`: their moments.
+Translation calibrate_map_and_spectrum(const RecordTexture& record, std::vector<double> pooled, const HeightMoments& wanted,
+                                       const std::vector<double>& surface_levels, double spacing, bool isotropic) {
+  std::vector<double> target = std::move(pooled);
   std::sort(target.begin(), target.end());
   constexpr int rounds = 4;
   constexpr double converged = 0.03;   // skewness and kurtosis
@@ -160,15 +158,15 @@ Translation calibrate_map_and_spectrum(const RecordTexture& record, const std::v
     // The distribution the lines have, from several realisations (about 2^20 heights): the
     // kurtosis of one 30 m line of the fine asphalt scatters by 0.1 to 0.2.
     std::vector<double> pieces;
-    std::uint64_t lines = 1;
-    for (std::uint64_t seed = calibration_seed; seed < calibration_seed + lines; ++seed) {
-      std::vector<double> line =
-          (seed == calibration_seed ? maker : translated_line_maker(record.centres_m, spacing, marginal, isotropic, seed))(
-              gaussian.gaussian_levels_db);
-      if (seed == calibration_seed) lines = std::clamp<std::uint64_t>((std::uint64_t{1} << 20) / line.size(), 1, 8);
+    const auto add_pieces = [&](std::vector<double> line) {
       for (double& v : line) v *= gaussian.scale;
       for (const auto& piece : band_pass_in_record_pieces(line, spacing, record)) pieces.insert(pieces.end(), piece.begin(), piece.end());
-    }
+      return line.size();
+    };
+    const std::size_t length = add_pieces(maker(gaussian.gaussian_levels_db));
+    const std::uint64_t lines = std::clamp<std::uint64_t>((std::uint64_t{1} << 20) / length, 1, 8);
+    for (std::uint64_t seed = calibration_seed + 1; seed < calibration_seed + lines; ++seed)
+      add_pieces(translated_line_maker(record.centres_m, spacing, marginal, isotropic, seed)(gaussian.gaussian_levels_db));
     const HeightDistribution made(std::move(pieces));
     const double miss = std::max(std::abs(made.moments().skewness - wanted.skewness),
                                  std::abs(made.moments().kurtosis - wanted.kurtosis));
@@ -240,14 +238,15 @@ std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road
     const double spacing = texture_sample_spacing(spec);
     const bool isotropic = spec.anisotropy == TextureRoadSpec::Anisotropy::isotropic;
     std::vector<double> surface_levels = isotropic ? isotropic_levels(record.centres_m, record.levels_db) : record.levels_db;
-    const Translation translation = calibrate_map_and_spectrum(record, surface_levels, spacing, isotropic);
+    std::vector<double> pooled;
+    for (const auto& line : record.band_passed) pooled.insert(pooled.end(), line.begin(), line.end());
+    const HeightMoments moments = height_moments(pooled);
+    const Translation translation =
+        calibrate_map_and_spectrum(record, std::move(pooled), moments, surface_levels, spacing, isotropic);
     const TranslationSpectrum& gaussian = translation.gaussian;
     spec.levels = gaussian.gaussian_levels_db;
     spec.marginal = [map = translation.map, scale = gaussian.scale](double u) { return scale * map->from_standard_normal(u); };
     std::vector<std::string> warnings = surface_warnings(record);
-    std::vector<double> pooled;
-    for (const auto& line : record.band_passed) pooled.insert(pooled.end(), line.begin(), line.end());
-    const HeightMoments moments = height_moments(pooled);
     return std::make_unique<ProfileSurfaceRoad>(make_rolling_texture_surface(spec), std::move(record), moments,
                                                 std::move(surface_levels), gaussian.gaussian_levels_db, spacing,
                                                 std::move(warnings));
