@@ -327,7 +327,8 @@ py::dict py_road(const std::string& kind, const py::object& value, const std::st
   RoadRunOptions options;
   if (ground_effect) {
     options.ground_effect = GroundEffectGeometry{(*ground_effect)[0], (*ground_effect)[1], (*ground_effect)[2]};
-    check_ground_effect_geometry(*options.ground_effect, name, "ground_effect");
+    options.ground_effect_source = name;
+    options.ground_effect_key = "ground_effect";
   }
   options.input = kind == "path" ? value.cast<std::string>() : name;
   options.toml = toml_of(kind, value, name);

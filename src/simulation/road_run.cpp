@@ -298,7 +298,8 @@ RoadRun run_road(const RoadRunOptions& options, const fs::path& out) {
     throw InputError(options.input, "--length",
                      "--length / --spacing gives more than " + std::to_string(max_profile_samples) + " samples");
   }
-  if (options.ground_effect) check_ground_effect_geometry(*options.ground_effect, "command line", "--ground-effect");
+  if (options.ground_effect)
+    check_ground_effect_geometry(*options.ground_effect, options.ground_effect_source, options.ground_effect_key);
   RoadUnderTest road;
   if (is_toml) {
     // A generated road's size is set by the command line (up to max_profile_samples × 1000

@@ -42,8 +42,12 @@ struct RoadRunOptions {
   // The contact law of cells tiled over the road (surface_contact_law.hpp), over `width` and
   // `length`; a profile file's line is used across the width.
   std::optional<SurfaceContactLawOptions> contact_law;
-  // The ground effect of the surface on a point source at this geometry (road_acoustics.hpp).
+  // The ground effect of the surface on a point source at this geometry (road_acoustics.hpp),
+  // and how a bad geometry's message names where it came from (Python: the input and its
+  // `ground_effect` argument).
   std::optional<GroundEffectGeometry> ground_effect;
+  std::string ground_effect_source = "command line";
+  std::string ground_effect_key = "--ground-effect";
   ProgressSink* progress_sink = nullptr;
 };
 
