@@ -19,6 +19,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "road/portable_normal.hpp"
+#include "road/rolled_mastic.hpp"
 #include "road/spectral_synthesis.hpp"
 
 #if defined(__SSE2__)
@@ -56,22 +57,27 @@ struct RolledMix {
   double stones = 0.0;                // V_c, the coarse aggregate's volume fraction
   double mastic = 0.0;                // V_m, binder and fine aggregate
   double depth = 0.0;                 // stones are centred in [−depth, 0] (m)
-  double mastic_level = 0.0;          // z_m (m), below the roller's plane z = 0
+  double thickness = 0.0;             // T, the layer the mastic fills (m)
+  double share = 0.0;                 // each column's mastic, levels of T/64, with the offset δ
+  std::size_t smoothing = 0;          // the mastic surface's averaging radius, samples
+  double mastic_level = 0.0;          // the mean of the mastic's surface on the reference patch (m)
 };
 
 struct Checked {
   double dmax = 0.0, dmin = 0.0, spacing = 0.0, lead_in = 0.0;
-  double base = 0.0;  // the flat level between the stones (m): the binder's, or the mastic's
-  RolledMix mix;      // texture = "rolled" only
+  // The flat level between the stones (m), the binder's; for texture = "rolled" the lowest the
+  // mastic's surface can lie, below which no stone is seen.
+  double base = 0.0;
+  RolledMix mix;  // texture = "rolled" only
 };
 
 // Densities of the mix's components (kg/m³): typical values for crushed rock and for bitumen.
 constexpr double aggregate_density = 2650.0;
 constexpr double binder_density = 1030.0;
-// The mastic's level is found on this many steps over the layer of one largest stone's thickness.
-constexpr int mastic_steps = 4000;
-// Size nodes per grading interval for the expected stone area at each depth.
-constexpr int size_nodes = 24;
+// The rolled mix's mastic share is found on a reference patch of this many largest stones square
+// (at least 0.1 m), from this seed, the same for every road of the mix (rolled_mastic_share).
+constexpr double reference_patch_stones = 10.0;
+constexpr std::uint64_t reference_patch_seed = 0x524f4c4c4544;  // "ROLLED"
 
 // The mass fraction passing d (0 … 1), linear in ln d between the sieves.
 double passing_at(const AggregateRoadSpec& spec, double d) {
@@ -88,7 +94,7 @@ double passing_at(const AggregateRoadSpec& spec, double d) {
 }
 
 // Checks the mix design of texture = "rolled" and fills k.dmax, k.dmin and k.mix (but the
-// mastic level, which needs the shape: rolled_mastic_level).
+// mastic's share, which needs the shape and the spacing: rolled_mastic_share).
 void check_mix(const AggregateRoadSpec& spec, Checked& k) {
   const std::vector<double>& s = spec.sieves;
   const std::vector<double>& p = spec.passing;
@@ -180,66 +186,9 @@ void check_chips(const AggregateRoadSpec& spec, Checked& k) {
   require_in("binder_level", spec.binder_level, 0.0, false, 1.0, true, "[0, 1) (fraction of the largest stone's thickness)");
 }
 
-// The level z_m of the mastic's flat surface between the stones of texture = "rolled" (k.base).
-// A stone of semi-axes a, b, c centred at z_c cuts the plane at height z in an ellipse of area
-// πab(1 − ((z − z_c)/c)²). Centres are uniform in depth, at n stones per m³; those within c of
-// the roller's plane are pushed down to z_c = −c. The expected summed area per unit area at z is
-// then Λ(z) = n·E[πab·(c·(1 − ((z + c)/c)²)₊ + c·(2/3 − G(u)))], u = (z + c)/c clamped to
-// [−1, 1], G(u) = u − u³/3; the stones cover 1 − exp(−Λ) of the plane (a Boolean model), with
-// n = −ln(1 − V_c)/E[stone volume] so that deep in the mix they fill V_c. The mastic, V_m·T per
-// unit area in the layer of one largest stone's thickness T under the plane, fills the pore space
-// exp(−Λ) of that layer from its bottom up; z_m is where it is used up. The expectation runs over
-// the grading (size_nodes per interval), so the level is the mix's, the same for every seed.
-void rolled_mastic_level(const AggregateRoadSpec& spec, Checked& k) {
-  RolledMix& mix = k.mix;
-  struct Node {
-    double a, b, c, weight;
-  };
-  std::vector<Node> nodes;
-  double total = 0.0, mean_volume = 0.0;
-  for (const RolledMix::Interval& in : mix.intervals) {
-    const double step = std::log(in.hi / in.lo) / size_nodes;
-    for (int q = 0; q < size_nodes; ++q) {
-      const double d = in.lo * std::exp((q + 0.5) * step);
-      // Number per unit ln d ∝ mass per unit ln d / d³.
-      const double weight = in.mass_per_log * std::pow(d, -3.0) * step;
-      nodes.push_back({spec.elongation * d / 2.0, d / 2.0, spec.shape_factor * d / 2.0, weight});
-      total += weight;
-    }
-  }
-  for (Node& n : nodes) {
-    n.weight /= total;
-    mean_volume += n.weight * 4.0 / 3.0 * std::numbers::pi * n.a * n.b * n.c;
-  }
-  const double per_volume = -std::log1p(-mix.stones) / mean_volume;
-  const auto covered = [&](double z) {  // Λ(z)
-    double sum = 0.0;
-    for (const Node& n : nodes) {
-      const double u = std::clamp(z / n.c, -1.0, 1.0);
-      sum += n.weight * std::numbers::pi * n.a * n.b * n.c * (2.0 / 3.0 - (u - u * u * u / 3.0));
-    }
-    return per_volume * sum;
-  };
-  const double thickness = spec.shape_factor * k.dmax;  // T
-  const double mastic = mix.mastic * thickness;
-  const double dz = thickness / mastic_steps;
-  double filled = 0.0;
-  double below = std::exp(-covered(-thickness));
-  k.base = 0.0;  // the mastic reaches the plane when the layer's pore space cannot hold it
-  for (int i = 1; i <= mastic_steps; ++i) {
-    const double z = -thickness + dz * i;
-    const double pore = std::exp(-covered(z));
-    const double step = 0.5 * (below + pore) * dz;
-    if (filled + step >= mastic) {
-      k.base = z - dz + dz * (mastic - filled) / step;
-      break;
-    }
-    filled += step;
-    below = pore;
-  }
-  mix.mastic_level = k.base;
-  mix.depth = thickness + spec.shape_factor * k.dmax / 2.0;  // T + c of the largest stone
-}
+// texture = "rolled": the layer, the mastic's share per column and the lowest level it can lie at
+// (k.base), from a reference patch of the mix (defined below, with the stones).
+void rolled_mastic_share(const AggregateRoadSpec& spec, Checked& k);
 
 Checked check(const AggregateRoadSpec& spec) {
   Checked k;
@@ -266,7 +215,7 @@ Checked check(const AggregateRoadSpec& spec) {
     throw_bad("lead_in", "must be a finite number >= 0 (got " + format_number(k.lead_in) + ")");
   }
   if (spec.texture == AggregateRoadSpec::Texture::rolled) {
-    rolled_mastic_level(spec, k);
+    rolled_mastic_share(spec, k);
   } else {
     k.base = spec.binder_level * (spec.shape_factor * k.dmax);
   }
@@ -375,11 +324,10 @@ std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked
     const double a = spec.elongation * b;
     const double c = spec.shape_factor * b;
     volume += 4.0 / 3.0 * std::numbers::pi * a * b * c;
-    // A stone whose top lies below the mastic's surface is drawn (it fills its volume, and the
-    // draws stay in step) but not kept: it raises no point of the surface, which starts at the
-    // mastic's level (raise_to_stones). Most stones of a mix lie so deep.
+    // A stone wholly below the layer the mastic fills is drawn (it fills its volume, and the
+    // draws stay in step) but not kept: it neither holds mastic up nor shows.
     const double zc = -mix.depth * w;
-    if (zc + c > k.base) stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});
+    if (zc + c > -mix.thickness) stones.push_back({x, y, a, b, c, std::cos(angle), std::sin(angle), zc});
   }
   return in_order_of_x(stones, x_lo, x_hi, k.spacing);
 }
@@ -415,6 +363,8 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
   double* const heights = z.data();  // held in a register: the store below would reload z's pointer
   for (const Stone& s : stones) {
     if ((++raised & 4095u) == 0) cancel.throw_if_cancelled();
+    // Hidden under the lowest surface the mastic can have (rolled; the chips' are never kept).
+    if (s.zc + s.c <= k.base) continue;
     const double x = s.x - origin, y = s.y, a = s.a, b = s.b, c = s.c, cs = s.cs, sn = s.sn;
     // Upper surface z_c + c sqrt(1 - rho^2) (rho the normalised footprint radius); negative: cut
     // at the top plane z = T.
@@ -472,17 +422,116 @@ void raise_to_stones(const AggregateRoadSpec& spec, const Checked& k, const std:
 
 double reach_of(const AggregateRoadSpec& spec, const Checked& k) { return spec.elongation * k.dmax / 2.0; }  // largest semi-axis
 
+// How far beyond a grid the stones must be known: the rolled mix's mastic surface is averaged
+// over k.mix.smoothing samples either side.
+double margin_of(const Checked& k) { return k.spacing * static_cast<double>(k.mix.smoothing); }
+
+// texture = "rolled": ORs into occupied[i·ny + j] the levels of the layer (rolled_mastic.hpp)
+// each stone fills in the column x = h·(x_first + i), y = h·(y_first + j).
+void mark_stone_levels(const Checked& k, const std::vector<Stone>& stones, long x_first, std::size_t nx, long y_first,
+                       std::size_t ny, std::vector<std::uint64_t>& occupied) {
+  const double h = k.spacing, thickness = k.mix.thickness;
+  const double x0 = h * static_cast<double>(x_first), y0 = h * static_cast<double>(y_first);
+  const CancellationToken cancel;
+  std::size_t marked = 0;
+  for (const Stone& s : stones) {
+    if ((++marked & 4095u) == 0) cancel.throw_if_cancelled();
+    const double x = s.x - x0, y = s.y - y0;
+    const double i_lo = std::max(0.0, std::ceil((x - s.a) / h));
+    const double i_hi = std::min(static_cast<double>(nx - 1), std::floor((x + s.a) / h));
+    const double j_lo = std::max(0.0, std::ceil((y - s.a) / h));
+    const double j_hi = std::min(static_cast<double>(ny - 1), std::floor((y + s.a) / h));
+    if (i_lo > i_hi || j_lo > j_hi) continue;
+    for (auto i = static_cast<std::size_t>(i_lo); i <= static_cast<std::size_t>(i_hi); ++i) {
+      const double dx = h * static_cast<double>(i) - x;
+      for (auto j = static_cast<std::size_t>(j_lo); j <= static_cast<std::size_t>(j_hi); ++j) {
+        const double dy = h * static_cast<double>(j) - y;
+        const double along = (dx * s.cs + dy * s.sn) / s.a;
+        const double across = (-dx * s.sn + dy * s.cs) / s.b;
+        const double rho2 = along * along + across * across;
+        if (rho2 >= 1.0) continue;
+        const double half = s.c * std::sqrt(1.0 - rho2);
+        occupied[i * ny + j] |= occupied_levels(s.zc - half, std::min(s.zc + half, 0.0), thickness);
+      }
+    }
+  }
+}
+
+// texture = "rolled": the mastic's surface (m, rolled_mastic.hpp) over the grid
+// x = (first + i)·h (i < x_count), y = (j − half_y)·h (j in `held`), row-major in x, from the
+// stones of `sets`. The grid is averaged with the samples up to k.mix.smoothing beyond it, whose
+// stones `sets` must hold; `beyond_end` false: the road ends at the grid's last line, and the
+// average is clipped there.
+std::vector<double> mastic_surface(const Checked& k, const std::vector<const std::vector<Stone>*>& sets,
+                                   std::size_t first, std::size_t x_count, std::size_t half_y, Columns held,
+                                   bool beyond_end) {
+  const std::size_t r = k.mix.smoothing;
+  const long x_first = static_cast<long>(first) - static_cast<long>(r);
+  const long y_first = static_cast<long>(held.first) - static_cast<long>(half_y) - static_cast<long>(r);
+  const std::size_t nx = x_count + r + (beyond_end ? r : 0), ny = held.count + 2 * r;
+  std::vector<std::uint64_t> occupied(nx * ny, 0);
+  for (const std::vector<Stone>* stones : sets) mark_stone_levels(k, *stones, x_first, nx, y_first, ny, occupied);
+  const double dz = k.mix.thickness / mastic_levels;
+  std::vector<double> level(nx * ny);
+  for (std::size_t c = 0; c < level.size(); ++c) level[c] = mastic_top(occupied[c], k.mix.share);
+  smooth_mastic_surface(level, nx, ny, r);
+  std::vector<double> z(x_count * held.count);
+  for (std::size_t i = 0; i < x_count; ++i)
+    for (std::size_t j = 0; j < held.count; ++j) z[i * held.count + j] = -k.mix.thickness + dz * level[(i + r) * ny + j + r];
+  return z;
+}
+
+// The flat level, or the rolled mix's mastic surface, of a grid as mastic_surface's, before the
+// stones are raised on it.
+std::vector<double> floor_heights(const AggregateRoadSpec& spec, const Checked& k,
+                                  const std::vector<const std::vector<Stone>*>& sets, std::size_t first,
+                                  std::size_t x_count, std::size_t half_y, Columns held, bool beyond_end) {
+  if (spec.texture != AggregateRoadSpec::Texture::rolled) return std::vector<double>(x_count * held.count, k.base);
+  return mastic_surface(k, sets, first, x_count, half_y, held, beyond_end);
+}
+
+void rolled_mastic_share(const AggregateRoadSpec& spec, Checked& k) {
+  RolledMix& mix = k.mix;
+  mix.thickness = spec.shape_factor * k.dmax;                  // T
+  mix.depth = mix.thickness + spec.shape_factor * k.dmax / 2.0;  // T + c of the largest stone
+  // The mastic levels out within a pocket between the stones, as wide as the largest of them.
+  mix.smoothing = static_cast<std::size_t>(std::lround(k.dmax / 2.0 / k.spacing));
+  k.base = -mix.thickness;  // every stone of the layer, for the reference patch
+  // The reference patch: its columns' free levels give the offset that keeps the mastic's total
+  // when the crowded columns are filled to the plane.
+  const double side = std::max(0.1, reference_patch_stones * k.dmax);
+  const std::size_t n = static_cast<std::size_t>(std::ceil(side / k.spacing)) + 1;
+  const double reach = reach_of(spec, k);
+  std::mt19937_64 engine(reference_patch_seed);
+  const std::vector<Stone> stones = place_stones(spec, k, engine, -reach, side + reach, side / 2.0 + reach);
+  std::vector<std::uint64_t> occupied(n * n, 0);
+  mark_stone_levels(k, stones, 0, n, -static_cast<long>(n / 2), n, occupied);
+  const double share = mix.mastic * mastic_levels;
+  try {
+    mix.share = share + mastic_offset(occupied, share);
+  } catch (const std::invalid_argument&) {
+    throw_bad("air_voids", "leaves the mix's mastic more volume than the pore space between its stones: with " +
+                               format_number(spec.binder_content) + " % binder the stones and mastic fill more than the "
+                               "layer; check binder_content, air_voids and the grading");
+  }
+  const double dz = mix.thickness / mastic_levels;
+  double mean = 0.0;
+  for (std::uint64_t o : occupied) mean += -mix.thickness + dz * mastic_top(o, mix.share);
+  mix.mastic_level = mean / static_cast<double>(occupied.size());
+  k.base = -mix.thickness + dz * std::min(mix.share, static_cast<double>(mastic_levels));
+}
+
 // The visible upper surface over the grid x = i h (i < x_count), y = (j - half_y) h
 // (j < 2 half_y + 1), row-major in x, before its mean is removed: the stones of the whole grid
 // (centres within a stone's reach of it) from the spec's seed. `mean` receives its mean.
 std::vector<double> raw_heights(const AggregateRoadSpec& spec, const Checked& k, std::size_t x_count,
                                 std::size_t half_y, double& mean) {
   const double h = k.spacing;
-  const double reach = reach_of(spec, k);
+  const double reach = reach_of(spec, k), margin = margin_of(k);
   std::mt19937_64 engine(spec.seed);
-  const std::vector<Stone> stones =
-      place_stones(spec, k, engine, -reach, h * static_cast<double>(x_count - 1) + reach, h * static_cast<double>(half_y) + reach);
-  std::vector<double> z(x_count * (2 * half_y + 1), k.base);
+  const std::vector<Stone> stones = place_stones(spec, k, engine, -reach - margin, h * static_cast<double>(x_count - 1) + reach,
+                                                 h * static_cast<double>(half_y) + reach + margin);
+  std::vector<double> z = floor_heights(spec, k, {&stones}, 0, x_count, half_y, Columns::all(half_y), false);
   raise_to_stones(spec, k, stones, 0, x_count, half_y, Columns::all(half_y), z);
   mean = 0.0;
   for (double v : z) mean += v;
@@ -629,8 +678,13 @@ class TiledAggregateSurface final : public RoadSurface {
  public:
   TiledAggregateSurface(const AggregateRoadSpec& spec, std::size_t tile_samples, std::size_t half_y)
       : spec_(spec), k_(check(spec)), tile_samples_(tile_samples), half_y_(half_y) {
-    // Tile 0: the road make_aggregate_surface makes for `length`, and the mean every tile removes.
-    std::vector<double> z = raw_heights(spec_, k_, tile_samples_ + 1, half_y_, mean_);
+    // Tile 0: the road make_aggregate_surface makes for `length`, and the mean every tile removes
+    // (the rolled mix's mastic surface, averaged across the tile's end, only differs from that
+    // road's, which ends there, within its averaging radius of the end).
+    std::vector<double> z = raw_tile(0);
+    mean_ = 0.0;
+    for (double v : z) mean_ += v;
+    mean_ /= static_cast<double>(z.size());
     remove_mean(k_, mean_, 0, 2 * half_y_ + 1, z);
     tiles_[0] = {0, Columns::all(half_y_), std::move(z)};
     tiles_[1] = {std::numeric_limits<std::size_t>::max(), {}, {}};
@@ -682,11 +736,12 @@ class TiledAggregateSurface final : public RoadSurface {
   // The stones centred in tile k's stretch: tile 0's are those make_aggregate_surface places
   // (centres in [−reach, L + reach)); tile k ≥ 1's are centred in [kL + reach, (k+1)L + reach).
   std::vector<Stone> draw_stones(std::size_t index) const {
-    const double h = k_.spacing, reach = reach_of(spec_, k_);
-    const double length = h * static_cast<double>(tile_samples_), y_half = h * static_cast<double>(half_y_) + reach;
+    const double h = k_.spacing, reach = reach_of(spec_, k_), margin = margin_of(k_);
+    const double length = h * static_cast<double>(tile_samples_);
+    const double y_half = h * static_cast<double>(half_y_) + reach + margin;
     if (index == 0) {
       std::mt19937_64 engine(spec_.seed);
-      return place_stones(spec_, k_, engine, -reach, length + reach, y_half);
+      return place_stones(spec_, k_, engine, -reach - margin, length + reach, y_half);
     }
     std::seed_seq seeds{static_cast<std::uint32_t>(spec_.seed), static_cast<std::uint32_t>(spec_.seed >> 32),
                         static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32)};
@@ -727,12 +782,23 @@ class TiledAggregateSurface final : public RoadSurface {
 
   Tile make_tile(std::size_t index) const {
     const Columns held = index == 0 ? Columns::all(half_y_) : strip_;
-    std::vector<double> z((tile_samples_ + 1) * held.count, k_.base);
-    const std::size_t first = index * tile_samples_;
-    for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
-      raise_to_stones(spec_, k_, stones_of(neighbour), first, tile_samples_ + 1, half_y_, held, z);
-    remove_mean(k_, mean_, first, held.count, z);
+    std::vector<double> z = raw_tile(index);
+    remove_mean(k_, mean_, index * tile_samples_, held.count, z);
     return {index, held, std::move(z)};
+  }
+
+  // Tile `index`'s heights before the mean is removed: raised by its own stones and its
+  // neighbours' (those of the tile after it reach none of its points, but the rolled mix's
+  // mastic surface is averaged across its end).
+  std::vector<double> raw_tile(std::size_t index) const {
+    const Columns held = index == 0 ? Columns::all(half_y_) : strip_;
+    const std::size_t first = index * tile_samples_;
+    std::vector<const std::vector<Stone>*> sets;
+    for (std::size_t neighbour = index == 0 ? 0 : index - 1; neighbour <= index + 1; ++neighbour)
+      sets.push_back(&stones_of(neighbour));
+    std::vector<double> z = floor_heights(spec_, k_, sets, first, tile_samples_ + 1, half_y_, held, true);
+    for (const std::vector<Stone>* stones : sets) raise_to_stones(spec_, k_, *stones, first, tile_samples_ + 1, half_y_, held, z);
+    return z;
   }
 
   struct TileStones {

@@ -143,5 +143,46 @@ TEST(TiledAggregateSurface, LaterTilesHoldTheStripUnderTheTyreWithTheFullWidthHe
   EXPECT_NO_THROW(narrow->height(0.2, 0.049)) << "the first tile holds the whole width";
 }
 
+// The rolled mix (AC 11): its mastic surface is averaged across tile boundaries over a square of
+// the largest stone, so tiles need their neighbours' stones. Visited in any order, and held as a
+// strip or the whole width, the heights are the same bits; across a boundary the road is as
+// continuous as within a tile.
+AggregateRoadSpec rolled_asphalt(double x_max, double half_width) {
+  AggregateRoadSpec spec;
+  spec.texture = AggregateRoadSpec::Texture::rolled;
+  spec.sieves = {0.000063, 0.00025, 0.0005, 0.001, 0.002, 0.004, 0.0056, 0.008, 0.0112, 0.016};
+  spec.passing = {7.0, 15.0, 21.0, 28.0, 37.0, 51.0, 60.0, 76.0, 95.0, 100.0};
+  spec.binder_content = 5.5;
+  spec.air_voids = 4.0;
+  spec.sample_spacing = 0.0005;
+  spec.seed = 3;
+  spec.length = 0.3;
+  spec.width = 0.1;
+  spec.half_width = half_width;
+  spec.x_max = x_max;
+  return spec;
+}
+
+TEST(TiledAggregateSurface, RolledMixTilesAreTheSameInAnyOrderAndJoinWithoutASeam) {
+  const auto forward = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.03));
+  const auto jumping = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.03));
+  const auto wide = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.05));
+  std::vector<double> xs;
+  for (double x = 0.0; x < 0.9; x += 0.0031) xs.push_back(x);
+  std::vector<double> ahead;
+  for (double x : xs) ahead.push_back(forward->height(x, 0.012));
+  for (std::size_t i = xs.size(); i-- > 0;) ASSERT_EQ(jumping->height(xs[i], 0.012), ahead[i]) << xs[i];
+  for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(wide->height(xs[i], 0.012), ahead[i]) << xs[i];
+  const double h = 0.0005, length = 0.3;
+  double step_inside = 0.0, step_across = 0.0;
+  for (double y = -0.03; y <= 0.03; y += h) {
+    for (double x = 0.05; x < 0.25; x += h) step_inside = std::max(step_inside, std::abs(forward->height(x + h, y) - forward->height(x, y)));
+    for (int k = 1; k <= 2; ++k)
+      for (double x = length * k - 3 * h; x < length * k + 3 * h; x += h)
+        step_across = std::max(step_across, std::abs(forward->height(x + h, y) - forward->height(x, y)));
+  }
+  EXPECT_LE(step_across, step_inside);
+}
+
 }  // namespace
 }  // namespace rollnoise
