@@ -60,7 +60,6 @@ struct RolledMix {
   double thickness = 0.0;             // T, the layer the mastic fills (m)
   double share = 0.0;                 // each column's mastic, levels of T/64, with the offset δ
   std::size_t smoothing = 0;          // the mastic surface's averaging radius, samples
-  double mastic_level = 0.0;          // the mean of the mastic's surface on the reference patch (m)
 };
 
 struct Checked {
@@ -291,7 +290,7 @@ std::vector<Stone> place_chips(const AggregateRoadSpec& spec, const Checked& k, 
 // Boolean model in 3-D of the coarse aggregate's volume fraction), five draws per stone in the
 // order x, y, size, angle, depth. The size: an interval of the grading by its number fraction,
 // then within it the number density ∝ d^−4 (mass spread evenly in log size) by inversion. A
-// stone that would stand above the roller's plane z = 0 is pushed down until its top touches it.
+// stone that would stand above the roller's plane z = 0 is cut flat there (raise_to_stones).
 std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked& k, std::mt19937_64& engine,
                                     double x_lo, double x_hi, double y_half) {
   const RolledMix& mix = k.mix;
@@ -514,11 +513,7 @@ void rolled_mastic_share(const AggregateRoadSpec& spec, Checked& k) {
                                format_number(spec.binder_content) + " % binder the stones and mastic fill more than the "
                                "layer; check binder_content, air_voids and the grading");
   }
-  const double dz = mix.thickness / mastic_levels;
-  double mean = 0.0;
-  for (std::uint64_t o : occupied) mean += -mix.thickness + dz * mastic_top(o, mix.share);
-  mix.mastic_level = mean / static_cast<double>(occupied.size());
-  k.base = -mix.thickness + dz * std::min(mix.share, static_cast<double>(mastic_levels));
+  k.base = -mix.thickness + mix.thickness / mastic_levels * std::min(mix.share, static_cast<double>(mastic_levels));
 }
 
 // The visible upper surface over the grid x = i h (i < x_count), y = (j - half_y) h

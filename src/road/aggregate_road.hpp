@@ -29,14 +29,14 @@
 //    passing, binder_content, air_voids instead of max_chip_size, grading_exponent, coverage,
 //    binder_level): the stones (sizes min_chip_size ... the first sieve passing 100 %, drawn from
 //    the sieve curve, linear in log size between sieves) lie at uniform random depths in the mix,
-//    at the coarse aggregate's volume fraction (a Boolean model in 3-D); the roller pushes every
-//    stone that would stand above the common top plane z = 0 down until its top touches it. The
-//    mastic (binder and the aggregate finer than min_chip_size) fills the pore space between the
-//    stones from below; the layer of one largest stone's thickness T under the plane holds its
-//    share of the mix's mastic, V_m·T, and the mastic's flat surface z_m is where that volume is
-//    used up (from the expected stone area at each depth, so z_m is the mix's, not the seed's).
-//    Above z_m the space between the stones is open: the air voids, and the room the convex stone
-//    tops leave under the roller's plane.
+//    at the coarse aggregate's volume fraction (a Boolean model in 3-D); a stone that would stand
+//    above the roller's plane z = 0 is cut flat there. The mastic (binder and the aggregate finer
+//    than min_chip_size) fills the pore space between the stones from below: every column of the
+//    layer of one largest stone's thickness T under the plane takes the mix's share V_m·T (with
+//    one offset per mix for what crowded columns cannot hold), and the columns' levels are
+//    averaged over a square of the largest stone, the pocket the mastic levels out in under the
+//    roller (road/rolled_mastic.hpp). Above the mastic the space between the stones is open: the
+//    air voids.
 //  - Heights: the visible upper surface, max(z_b, max over stones of the stone's upper surface),
 //    minus its mean over the generated grid (r = 0 is the mean level), times a raised-cosine
 //    lead-in window over the first lead_in metres (r = 0 for x < 0, the flat lead-in).
