@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -426,8 +427,8 @@ double reach_of(const AggregateRoadSpec& spec, const Checked& k) { return spec.e
 double margin_of(const Checked& k) { return k.spacing * static_cast<double>(k.mix.smoothing); }
 
 // texture = "rolled": ORs into occupied[i·ny + j] the levels of the layer (rolled_mastic.hpp)
-// each stone fills in the column x = h·(x_first + i), y = h·(y_first + j).
-void mark_stone_levels(const Checked& k, const std::vector<Stone>& stones, long x_first, std::size_t nx, long y_first,
+// each stone of `stones` fills in the column x = h·(x_first + i), y = h·(y_first + j).
+void mark_stone_levels(const Checked& k, std::span<const Stone> stones, long x_first, std::size_t nx, long y_first,
                        std::size_t ny, std::vector<std::uint64_t>& occupied) {
   const double h = k.spacing, thickness = k.mix.thickness;
   const double x0 = h * static_cast<double>(x_first), y0 = h * static_cast<double>(y_first);
@@ -438,11 +439,21 @@ void mark_stone_levels(const Checked& k, const std::vector<Stone>& stones, long 
     const double x = s.x - x0, y = s.y - y0;
     const double i_lo = std::max(0.0, std::ceil((x - s.a) / h));
     const double i_hi = std::min(static_cast<double>(nx - 1), std::floor((x + s.a) / h));
-    const double j_lo = std::max(0.0, std::ceil((y - s.a) / h));
-    const double j_hi = std::min(static_cast<double>(ny - 1), std::floor((y + s.a) / h));
-    if (i_lo > i_hi || j_lo > j_hi) continue;
+    if (i_lo > i_hi) continue;
+    // ρ² = (dx·cs + dy·sn)²/a² + (dy·cs − dx·sn)²/b² = A·dy² + B·dy + C: the chord of the
+    // footprint on each row (a sample wider either side; the test on ρ² decides).
+    const double ia2 = 1.0 / (s.a * s.a), ib2 = 1.0 / (s.b * s.b);
+    const double quad = s.sn * s.sn * ia2 + s.cs * s.cs * ib2;
     for (auto i = static_cast<std::size_t>(i_lo); i <= static_cast<std::size_t>(i_hi); ++i) {
       const double dx = h * static_cast<double>(i) - x;
+      const double lin = 2.0 * dx * s.cs * s.sn * (ia2 - ib2);
+      const double cst = dx * dx * (s.cs * s.cs * ia2 + s.sn * s.sn * ib2) - 1.0;
+      const double disc = lin * lin - 4.0 * quad * cst;
+      if (disc < 0.0) continue;
+      const double root = std::sqrt(disc);
+      const double j_lo = std::max(0.0, std::ceil((y + (-lin - root) / (2.0 * quad)) / h) - 1.0);
+      const double j_hi = std::min(static_cast<double>(ny - 1), std::floor((y + (-lin + root) / (2.0 * quad)) / h) + 1.0);
+      if (j_lo > j_hi) continue;
       for (auto j = static_cast<std::size_t>(j_lo); j <= static_cast<std::size_t>(j_hi); ++j) {
         const double dy = h * static_cast<double>(j) - y;
         const double along = (dx * s.cs + dy * s.sn) / s.a;
@@ -456,27 +467,57 @@ void mark_stone_levels(const Checked& k, const std::vector<Stone>& stones, long 
   }
 }
 
+// The stones of a set (in order of x to within k.spacing: in_order_of_x) that can reach
+// x in [x_lo, x_hi), from `start` on; `start` moves past those that lie before x_lo for good
+// (the next call asks for a later stretch).
+std::span<const Stone> stones_reaching(const std::vector<Stone>& stones, std::size_t& start, double x_lo, double x_hi,
+                                       double reach, double spacing) {
+  while (start < stones.size() && stones[start].x + reach < x_lo) ++start;
+  std::size_t end = start;
+  // A stone after one centred at x lies at x − spacing or beyond.
+  while (end < stones.size() && stones[end].x - reach - spacing < x_hi) ++end;
+  return {stones.data() + start, end - start};
+}
+
 // texture = "rolled": the mastic's surface (m, rolled_mastic.hpp) over the grid
 // x = (first + i)·h (i < x_count), y = (j − half_y)·h (j in `held`), row-major in x, from the
-// stones of `sets`. The grid is averaged with the samples up to k.mix.smoothing beyond it, whose
+// stones of `sets` (none with a semi-axis beyond `reach`). The grid is averaged with the samples up to k.mix.smoothing beyond it, whose
 // stones `sets` must hold; `beyond_end` false: the road ends at the grid's last line, and the
-// average is clipped there.
-std::vector<double> mastic_surface(const Checked& k, const std::vector<const std::vector<Stone>*>& sets,
+// average is clipped there. Made in stretches of mastic_rows rows along x, each with the rows its
+// averages reach either side: the memory of one stretch, and the same bits as the whole grid at
+// once (smooth_mastic_surface's sums are exact).
+std::vector<double> mastic_surface(const Checked& k, double reach, const std::vector<const std::vector<Stone>*>& sets,
                                    std::size_t first, std::size_t x_count, std::size_t half_y, Columns held,
                                    bool beyond_end) {
-  const std::size_t r = k.mix.smoothing;
-  const long x_first = static_cast<long>(first) - static_cast<long>(r);
-  const long y_first = static_cast<long>(held.first) - static_cast<long>(half_y) - static_cast<long>(r);
-  const std::size_t nx = x_count + r + (beyond_end ? r : 0), ny = held.count + 2 * r;
-  std::vector<std::uint64_t> occupied(nx * ny, 0);
-  for (const std::vector<Stone>* stones : sets) mark_stone_levels(k, *stones, x_first, nx, y_first, ny, occupied);
-  const double dz = k.mix.thickness / mastic_levels;
-  std::vector<double> level(nx * ny);
-  for (std::size_t c = 0; c < level.size(); ++c) level[c] = mastic_top(occupied[c], k.mix.share);
-  smooth_mastic_surface(level, nx, ny, r);
+  constexpr std::size_t mastic_rows = 512;
+  const auto r = static_cast<long>(k.mix.smoothing);
+  const long y_first = static_cast<long>(held.first) - static_cast<long>(half_y) - r;
+  const std::size_t ny = held.count + 2 * k.mix.smoothing;
+  const long last_row = static_cast<long>(x_count) - 1 + (beyond_end ? r : 0);  // the last row with stones known
+  const double h = k.spacing, dz = k.mix.thickness / mastic_levels;
   std::vector<double> z(x_count * held.count);
-  for (std::size_t i = 0; i < x_count; ++i)
-    for (std::size_t j = 0; j < held.count; ++j) z[i * held.count + j] = -k.mix.thickness + dz * level[(i + r) * ny + j + r];
+  std::vector<std::size_t> starts(sets.size(), 0);
+  std::vector<std::uint64_t> occupied;
+  std::vector<double> level;
+  for (std::size_t out = 0; out < x_count; out += mastic_rows) {
+    const std::size_t out_end = std::min(x_count, out + mastic_rows);
+    const long lo = static_cast<long>(out) - r, hi = std::min(static_cast<long>(out_end) - 1 + r, last_row);
+    const auto rows = static_cast<std::size_t>(hi - lo + 1);
+    const long x_first = static_cast<long>(first) + lo;
+    occupied.assign(rows * ny, 0);
+    for (std::size_t set = 0; set < sets.size(); ++set) {
+      const std::span<const Stone> near =
+          stones_reaching(*sets[set], starts[set], h * static_cast<double>(x_first),
+                          h * static_cast<double>(x_first + static_cast<long>(rows)), reach, h);
+      mark_stone_levels(k, near, x_first, rows, y_first, ny, occupied);
+    }
+    level.resize(rows * ny);
+    for (std::size_t c = 0; c < level.size(); ++c) level[c] = mastic_top(occupied[c], k.mix.share);
+    smooth_mastic_surface(level, rows, ny, k.mix.smoothing);
+    for (std::size_t i = out; i < out_end; ++i)
+      for (std::size_t j = 0; j < held.count; ++j)
+        z[i * held.count + j] = -k.mix.thickness + dz * level[(i - out + k.mix.smoothing) * ny + j + k.mix.smoothing];
+  }
   return z;
 }
 
@@ -486,7 +527,7 @@ std::vector<double> floor_heights(const AggregateRoadSpec& spec, const Checked& 
                                   const std::vector<const std::vector<Stone>*>& sets, std::size_t first,
                                   std::size_t x_count, std::size_t half_y, Columns held, bool beyond_end) {
   if (spec.texture != AggregateRoadSpec::Texture::rolled) return std::vector<double>(x_count * held.count, k.base);
-  return mastic_surface(k, sets, first, x_count, half_y, held, beyond_end);
+  return mastic_surface(k, reach_of(spec, k), sets, first, x_count, half_y, held, beyond_end);
 }
 
 void rolled_mastic_share(const AggregateRoadSpec& spec, Checked& k) {
@@ -504,7 +545,7 @@ void rolled_mastic_share(const AggregateRoadSpec& spec, Checked& k) {
   std::mt19937_64 engine(reference_patch_seed);
   const std::vector<Stone> stones = place_stones(spec, k, engine, -reach, side + reach, side / 2.0 + reach);
   std::vector<std::uint64_t> occupied(n * n, 0);
-  mark_stone_levels(k, stones, 0, n, -static_cast<long>(n / 2), n, occupied);
+  mark_stone_levels(k, std::span<const Stone>(stones), 0, n, -static_cast<long>(n / 2), n, occupied);
   const double share = mix.mastic * mastic_levels;
   try {
     mix.share = share + mastic_offset(occupied, share);
