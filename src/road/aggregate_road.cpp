@@ -442,8 +442,9 @@ void mark_stone_levels(const Checked& k, std::span<const Stone> stones, long x_f
     if (i_lo > i_hi) continue;
     // ρ² = (dx·cs + dy·sn)²/a² + (dy·cs − dx·sn)²/b² = A·dy² + B·dy + C: the chord of the
     // footprint on each row (a sample wider either side; the test on ρ² decides).
-    const double ia2 = 1.0 / (s.a * s.a), ib2 = 1.0 / (s.b * s.b);
+    const double ia = 1.0 / s.a, ib = 1.0 / s.b, ia2 = ia * ia, ib2 = ib * ib;
     const double quad = s.sn * s.sn * ia2 + s.cs * s.cs * ib2;
+    const double cs_a = s.cs * ia, sn_a = s.sn * ia, cs_b = s.cs * ib, sn_b = s.sn * ib;
     for (auto i = static_cast<std::size_t>(i_lo); i <= static_cast<std::size_t>(i_hi); ++i) {
       const double dx = h * static_cast<double>(i) - x;
       const double lin = 2.0 * dx * s.cs * s.sn * (ia2 - ib2);
@@ -456,8 +457,8 @@ void mark_stone_levels(const Checked& k, std::span<const Stone> stones, long x_f
       if (j_lo > j_hi) continue;
       for (auto j = static_cast<std::size_t>(j_lo); j <= static_cast<std::size_t>(j_hi); ++j) {
         const double dy = h * static_cast<double>(j) - y;
-        const double along = (dx * s.cs + dy * s.sn) / s.a;
-        const double across = (-dx * s.sn + dy * s.cs) / s.b;
+        const double along = dx * cs_a + dy * sn_a;
+        const double across = dy * cs_b - dx * sn_b;
         const double rho2 = along * along + across * across;
         if (rho2 >= 1.0) continue;
         const double half = s.c * std::sqrt(1.0 - rho2);

@@ -157,16 +157,16 @@ AggregateRoadSpec rolled_asphalt(double x_max, double half_width) {
   spec.sample_spacing = 0.0005;
   spec.seed = 3;
   spec.length = 0.3;
-  spec.width = 0.1;
+  spec.width = 0.06;
   spec.half_width = half_width;
   spec.x_max = x_max;
   return spec;
 }
 
 TEST(TiledAggregateSurface, RolledMixTilesAreTheSameInAnyOrderAndJoinWithoutASeam) {
-  const auto forward = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.03));
-  const auto jumping = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.03));
-  const auto wide = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.05));
+  const auto forward = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.015));
+  const auto jumping = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.015));
+  const auto wide = make_rolling_aggregate_surface(rolled_asphalt(0.9, 0.03));
   std::vector<double> xs;
   for (double x = 0.0; x < 0.9; x += 0.0031) xs.push_back(x);
   std::vector<double> ahead;
@@ -175,7 +175,7 @@ TEST(TiledAggregateSurface, RolledMixTilesAreTheSameInAnyOrderAndJoinWithoutASea
   for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(wide->height(xs[i], 0.012), ahead[i]) << xs[i];
   const double h = 0.0005, length = 0.3;
   double step_inside = 0.0, step_across = 0.0;
-  for (double y = -0.03; y <= 0.03; y += h) {
+  for (double y = -0.015; y <= 0.015; y += h) {
     for (double x = 0.05; x < 0.25; x += h) step_inside = std::max(step_inside, std::abs(forward->height(x + h, y) - forward->height(x, y)));
     for (int k = 1; k <= 2; ++k)
       for (double x = length * k - 3 * h; x < length * k + 3 * h; x += h)
