@@ -296,9 +296,18 @@ std::vector<Stone> place_mix_stones(const AggregateRoadSpec& spec, const Checked
                                     double x_lo, double x_hi, double y_half) {
   const RolledMix& mix = k.mix;
   const double volume_needed = -std::log1p(-mix.stones) * (x_hi - x_lo) * 2.0 * y_half * mix.depth;
-  const double smallest = std::numbers::pi / 6.0 * spec.elongation * spec.shape_factor * std::pow(k.dmin, 3.0);
-  if (!(volume_needed / smallest <= max_stones)) {
-    throw_bad("length", "the road would hold up to " + format_number(volume_needed / smallest) +
+  // The expected number of stones: the volume over the mean stone's, E[d³] = 3·ln(hi/lo)/(lo⁻³ − hi⁻³)
+  // within an interval (number density ∝ d⁻⁴); the draws stop within a stone of it.
+  double mean_cube = 0.0, fraction_below = 0.0;
+  for (std::size_t i = 0; i < mix.intervals.size(); ++i) {
+    const RolledMix::Interval& in = mix.intervals[i];
+    mean_cube += (mix.cumulative[i] - fraction_below) * 3.0 * std::log(in.hi / in.lo) /
+                 (std::pow(in.lo, -3.0) - std::pow(in.hi, -3.0));
+    fraction_below = mix.cumulative[i];
+  }
+  const double expected = volume_needed / (std::numbers::pi / 6.0 * spec.elongation * spec.shape_factor * mean_cube);
+  if (!(expected <= max_stones)) {
+    throw_bad("length", "the road would hold about " + format_number(expected) +
                             " stones, more than the limit of 2^25; use a shorter length (or width)");
   }
   std::vector<std::array<double, 2>> inverse_cubes;  // lo^-3 and hi^-3 of each interval

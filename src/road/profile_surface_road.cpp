@@ -215,7 +215,8 @@ ProfileSurfaceRoad::ProfileSurfaceRoad(std::unique_ptr<RoadSurface> surface, Rec
   if (!surface_) throw std::invalid_argument("ProfileSurfaceRoad: no surface");
 }
 
-std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road, double x_max, double half_width) {
+std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road, double x_max, double half_width,
+                                                         RoadBuild build) {
   TextureRoadSpec spec;
   spec.seed = static_cast<std::uint64_t>(road.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
   spec.length = road.positive("length", 20.0);
@@ -230,6 +231,7 @@ std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road
   spec.half_width = half_width;
   const std::vector<std::filesystem::path> files = record_files(road);
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   Record data = read_record(road, files);
   try {
     RecordTexture record = measure_record_texture(data.lines, data.spacing, data.names);

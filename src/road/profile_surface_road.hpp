@@ -84,6 +84,8 @@ class ProfileSurfaceRoad final : public RoadSurface {
 // Builds the surface of a [road] table of type "profile_surface" for a run over x <= x_max and
 // |y| <= half_width. Unknown keys are rejected; bad values are InputErrors naming "[road] key" in
 // the file that set it, or the data file.
-std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road, double x_max, double half_width);
+// RoadBuild::keys_only: the keys only, nullptr (road_profile.hpp).
+std::unique_ptr<ProfileSurfaceRoad> make_profile_surface(const ConfigTable& road, double x_max, double half_width,
+                                                         RoadBuild build = RoadBuild::road);
 
 }  // namespace rollnoise

@@ -55,41 +55,45 @@ std::unique_ptr<RoadProfile> make_sine(const ConfigTable& road) {
   return build_named(road, [&] { return std::make_unique<SineRoad>(amplitude, wavelength); });
 }
 
-std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max) {
+std::unique_ptr<RoadProfile> make_random(const ConfigTable& road, double x_max, RoadBuild build) {
   RandomRoadSpec spec;
   read_random_spectrum_keys(road, spec);
   // A fixed stretch of road, so that runs of different duration on the same case see the same
   // profile; a run longer than `length` gets a longer (and so different) road.
   spec.x_max = std::max(x_max, road.positive("length", 100.0));
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return std::make_unique<RandomRoad>(spec); });
 }
 
-std::unique_ptr<RoadProfile> make_texture(const ConfigTable& road, double x_max) {
+std::unique_ptr<RoadProfile> make_texture(const ConfigTable& road, double x_max, RoadBuild build) {
   TextureRoadSpec spec;
   read_texture_keys(road, spec, false, 100.0);
   spec.x_max = x_max;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return make_texture_profile(spec); });
 }
 
-std::unique_ptr<RoadProfile> make_iso8608(const ConfigTable& road, double x_max) {
+std::unique_ptr<RoadProfile> make_iso8608(const ConfigTable& road, double x_max, RoadBuild build) {
   Iso8608RoadSpec spec;
   read_iso8608_keys(road, spec);
   spec.x_max = x_max;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return make_iso8608_profile(spec); });
 }
 
-std::unique_ptr<RoadProfile> make_aggregate(const ConfigTable& road, double x_max) {
+std::unique_ptr<RoadProfile> make_aggregate(const ConfigTable& road, double x_max, RoadBuild build) {
   AggregateRoadSpec spec;
   read_aggregate_keys(road, spec, false, 100.0);
   spec.x_max = x_max;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return make_aggregate_profile(spec); });
 }
 
-std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max) {
+std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, double x_max, RoadBuild build) {
   const std::string name = road.text("file");
   if (name.empty()) {
     road.fail("file", "must name a profile file (a CSV with columns x,z in m, or x_mm,z_mm; a laser "
@@ -99,6 +103,7 @@ std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, do
   const SpikeHandling spikes =
       road.choice("spikes", {"remove", "keep"}, "remove") == "keep" ? SpikeHandling::keep : SpikeHandling::remove;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   // Relative to the file that set the key (the case file, or a model file it includes).
   const ReferencedFile found = find_referenced_file(name, road.source_of("file"));
   road.note_referenced_file("file", found);  // listed in the summary when outside its folder
@@ -108,7 +113,7 @@ std::unique_ptr<RoadProfile> make_file(const ConfigTable& road, double x_min, do
 
 }  // namespace
 
-std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max) {
+std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max, RoadBuild build) {
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_profile: the x range must be numbers");
   }
@@ -139,11 +144,11 @@ std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x
   }
   if (type == "sine") return make_sine(road);
   if (type == "cleat") return make_cleat(road);
-  if (type == "random") return make_random(road, x_max);
-  if (type == "iso8608") return make_iso8608(road, x_max);
-  if (type == "texture") return make_texture(road, x_max);
-  if (type == "aggregate") return make_aggregate(road, x_max);
-  return make_file(road, x_min, x_max);
+  if (type == "random") return make_random(road, x_max, build);
+  if (type == "iso8608") return make_iso8608(road, x_max, build);
+  if (type == "texture") return make_texture(road, x_max, build);
+  if (type == "aggregate") return make_aggregate(road, x_max, build);
+  return make_file(road, x_min, x_max, build);
 }
 
 }  // namespace rollnoise

@@ -20,10 +20,17 @@ class RoadProfile {
   virtual double height(double x) const = 0;
 };
 
+// What make_road_profile and make_road_surface do with a table: build the road, or only read and
+// check its keys (unknown keys, types and the ranges read with them), without generating the
+// road or reading the files it names, and return nullptr: a run checks its road before the
+// tyre's model, whose two-layer tables take tens of seconds.
+enum class RoadBuild { road, keys_only };
+
 // Builds the profile of a [road] table. The run will look at x in [x_min, x_max]; profiles
 // that are generated or read cover at least that range (a file that does not is an
 // InputError). Unknown keys are rejected; an [about] table (a library surface file's
 // description, models/surfaces) is ignored.
-std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max);
+std::unique_ptr<RoadProfile> make_road_profile(const ConfigTable& road, double x_min, double x_max,
+                                               RoadBuild build = RoadBuild::road);
 
 }  // namespace rollnoise

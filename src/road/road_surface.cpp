@@ -51,7 +51,8 @@ std::unique_ptr<RoadSurface> build_named(const ConfigTable& road, Build build) {
   }
 }
 
-std::unique_ptr<RoadSurface> make_random_surface(const ConfigTable& road, double x_max, double half_width) {
+std::unique_ptr<RoadSurface> make_random_surface(const ConfigTable& road, double x_max, double half_width,
+                                                 RoadBuild build) {
   RandomSurfaceSpec spec;
   read_random_spectrum_keys(road, spec);
   // A fixed patch of road, so that runs of different duration and tyres of different width on
@@ -61,32 +62,37 @@ std::unique_ptr<RoadSurface> make_random_surface(const ConfigTable& road, double
   spec.x_max = x_max;
   spec.half_width = half_width;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return std::make_unique<RandomSurface>(spec); });
 }
 
-std::unique_ptr<RoadSurface> make_texture_map(const ConfigTable& road, double x_max, double half_width) {
+std::unique_ptr<RoadSurface> make_texture_map(const ConfigTable& road, double x_max, double half_width, RoadBuild build) {
   TextureRoadSpec spec;
   read_texture_keys(road, spec, true, 20.0);
   spec.x_max = x_max;
   spec.half_width = half_width;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return make_rolling_texture_surface(spec); });
 }
 
-std::unique_ptr<RoadSurface> make_aggregate_map(const ConfigTable& road, double x_max, double half_width) {
+std::unique_ptr<RoadSurface> make_aggregate_map(const ConfigTable& road, double x_max, double half_width,
+                                                RoadBuild build) {
   AggregateRoadSpec spec;
   read_aggregate_keys(road, spec, true, 5.0);
   spec.x_max = x_max;
   spec.half_width = half_width;
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   return build_named(road, [&] { return make_rolling_aggregate_surface(spec); });
 }
 
 std::unique_ptr<RoadSurface> make_height_map(const ConfigTable& road, double x_min, double x_max,
-                                             double half_width) {
+                                             double half_width, RoadBuild build) {
   const std::string name = road.text("file");
   if (name.empty()) road.fail("file", "must name a CSV file (columns x,y,z in m, one row per grid point)");
   road.reject_unknown_keys();
+  if (build == RoadBuild::keys_only) return nullptr;
   // Relative to the file that set the key (the case file, or a model file it includes).
   const ReferencedFile found = find_referenced_file(name, road.source_of("file"));
   road.note_referenced_file("file", found);  // listed in the summary when outside its folder
@@ -97,7 +103,7 @@ std::unique_ptr<RoadSurface> make_height_map(const ConfigTable& road, double x_m
 }  // namespace
 
 std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,
-                                               double half_width) {
+                                               double half_width, RoadBuild build) {
   if (std::isnan(x_min) || std::isnan(x_max)) {
     throw std::invalid_argument("make_road_surface: the x range must be numbers");
   }
@@ -114,12 +120,14 @@ std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x
   // Read before the type's keys, whose check for unknown keys must know it.
   RoadAbsorption absorption = read_road_absorption(road);
   std::unique_ptr<RoadSurface> surface;
-  if (type == "profile_surface") surface = make_profile_surface(road, x_max, half_width);
-  else if (type == "random_surface") surface = make_random_surface(road, x_max, half_width);
-  else if (type == "surface") surface = make_height_map(road, x_min, x_max, half_width);
-  else if (type == "texture") surface = make_texture_map(road, x_max, half_width);
-  else if (type == "aggregate") surface = make_aggregate_map(road, x_max, half_width);
+  if (type == "profile_surface") surface = make_profile_surface(road, x_max, half_width, build);
+  else if (type == "random_surface") surface = make_random_surface(road, x_max, half_width, build);
+  else if (type == "surface") surface = make_height_map(road, x_min, x_max, half_width, build);
+  else if (type == "texture") surface = make_texture_map(road, x_max, half_width, build);
+  else if (type == "aggregate") surface = make_aggregate_map(road, x_max, half_width, build);
+  else if (build == RoadBuild::keys_only) (void)make_road_profile(road, x_min, x_max, build);
   else surface = std::make_unique<ProfileSurface>(make_road_profile(road, x_min, x_max));
+  if (build == RoadBuild::keys_only) return nullptr;
   surface->set_absorption(std::move(absorption));
   return surface;
 }

@@ -70,7 +70,8 @@ class ProfileSurface final : public RoadSurface {
 // carried by the surface. The run looks at x in [x_min, x_max] and y in
 // [-half_width, half_width] (half_width >= 0). Unknown keys are rejected; every bad value is an
 // InputError naming "[road] key" in the file that set it, or the data file.
+// RoadBuild::keys_only: the keys only, nullptr (road_profile.hpp).
 std::unique_ptr<RoadSurface> make_road_surface(const ConfigTable& road, double x_min, double x_max,
-                                               double half_width);
+                                               double half_width, RoadBuild build = RoadBuild::road);
 
 }  // namespace rollnoise

@@ -240,8 +240,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   StageTimes stages;
 
   // Every table is read and checked before the tyre's model is made (the two-layer tyre's table
-  // and fits take tens of seconds without the cache): a wrong key costs no wait. The road's keys
-  // are checked when it is made, after the model, since it needs the grid.
+  // and fits take tens of seconds without the cache): a wrong key costs no wait. The road is made
+  // after the model, since it needs the grid, but its keys are checked here.
   RollingTyreSpec tyre_spec = read_rolling_tyre_spec(tyre);
   const TyreRollingSettings settings = read_tyre_rolling_settings(rolling);
   std::shared_ptr<const TreadPattern> pattern;
@@ -263,6 +263,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
       read_tyre_sound_settings(file.optional_section("radiation"), output, tyre_spec.radius, tyre_spec.width,
                                settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
+  (void)make_road_surface(road_table, 0.0, 0.0, 0.0, RoadBuild::keys_only);
   const RollingTyreModel model = make_rolling_tyre_model(std::move(tyre_spec), options.cache);
   if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
   if (options.cache_limit) sound.cache_limit = *options.cache_limit;

@@ -1023,7 +1023,8 @@ TEST(SimulateCli, TwoLayerCaseWithABadKeyFailsBeforeItsModesAreComputed) {
   for (const auto& [section, key, value, named] :
        {std::tuple<const char*, const char*, const char*, const char*>{"output", "bogus", "1", "[output] bogus"},
         {"rolling", "speed", "-3.0", "[rolling] speed"},
-        {"radiation", "receivers", "3", "[radiation] receivers"}}) {
+        {"radiation", "receivers", "3", "[radiation] receivers"},
+        {"road", "bogus", "1", "[road] bogus"}}) {
     ws.write("case.toml", edit_case(project_case("two_layer_smooth_80kmh.toml"),
                                     {{"tyre", "file", "\"two_layer.toml\""}, {section, key, value}}));
     const RunResult r = ws.run({"simulate", "case.toml", "--out", "out"}, "ROLLNOISE_CACHE=" + ws.path("cache").string() + " ");
