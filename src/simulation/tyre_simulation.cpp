@@ -261,7 +261,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
       read_tyre_sound_settings(file.optional_section("radiation"), output, tyre_spec.radius, tyre_spec.width,
-                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
+                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0,
+                               /*air_pumping_default=*/pattern != nullptr);
   output.reject_unknown_keys();
   const RollingTyreModel model = make_rolling_tyre_model(std::move(tyre_spec), options.cache);
   if (sound.radiation.threads == 0) sound.radiation.threads = options.radiation_threads;
@@ -317,6 +318,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                       settings.road_sampling};
   run.contact_law = settings.contact_law;
   run.pattern = pattern;
+  // The air pumping is heard only through the radiation.
+  run.air_pumping = sound.enabled && sound.air_pumping;
   if (run.contact_law == ContactLaw::texture) {
     if (!(model.tread_youngs_modulus > 0.0))
       throw InputError(tyre.source_of(model.model == "plate" ? "tread" : "tread_youngs_modulus"),
@@ -427,13 +430,42 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     stages.lap("energy_budget");
     const std::string source = fs::path(file.path()).filename().string();
     PlotBatch* sound_plots = plots ? &plot_batch : nullptr;
+    // The air pumped out of the patch: a monopole at each edge of the steady patch, on the
+    // centre plane, air_pumping_source_height above the road (air_pumping.hpp).
+    std::optional<MonopoleSources> air;
+    if (run.air_pumping) {
+      const AirPumpingTrace& pumped = trace.air_pumping;
+      air.emplace();
+      air->positions.resize(3, 2);
+      air->positions.col(0) = Eigen::Vector3d(pumped.front_edge_x, 0.0, air_pumping_source_height);
+      air->positions.col(1) = Eigen::Vector3d(pumped.rear_edge_x, 0.0, air_pumping_source_height);
+      air->flows.resize(pumped.front_flow.size(), 2);
+      air->flows.col(0) = pumped.front_flow;
+      air->flows.col(1) = pumped.rear_flow;
+    }
+    const MonopoleSources* air_sources = air ? &*air : nullptr;
     const nlohmann::json heard =
-        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get())
+        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get(),
+                                        air_sources)
                      : write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed, source,
-                                        sound_plots, budget.get(), options.progress);
+                                        sound_plots, budget.get(), options.progress, air_sources);
     stages.skip();
     for (const auto& [key, value] : heard.items())
       if (key != "sound_stage_times_s") summary[key] = value;
+    if (run.air_pumping) {
+      // The contact side of the air pumping: where the flows leave, and what following the air
+      // cost inside the step loop.
+      const AirPumpingTrace& pumped = trace.air_pumping;
+      nlohmann::json& entry = summary["air_pumping"];
+      entry["front_edge_x_m"] = pumped.front_edge_x;
+      entry["rear_edge_x_m"] = pumped.rear_edge_x;
+      entry["source_height_m"] = air_pumping_source_height;
+      entry["sealing_gap_m"] = air_sealing_gap;
+      entry["most_closed_regions"] = pumped.most_closed_regions;
+      entry["mean_enclosed_volume_m3"] = pumped.enclosed_volume.mean();
+      entry["mean_closed_volume_m3"] = pumped.closed_volume.mean();
+      entry["time_s"] = pumped.seconds;
+    }
     const nlohmann::json& sound_stages = heard.at("sound_stage_times_s");
     for (const auto& [key, value] : sound_stages.items()) summary["stage_times_s"][key] = value;
   }
