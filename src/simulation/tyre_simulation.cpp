@@ -61,6 +61,19 @@ Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& gri
   return Eigen::MatrixXd::Zero(grid.points(), grid.points());
 }
 
+// The air pumping step by step (air_pumping.hpp): the flows out of the patch at its edges, the
+// closed regions' share, and the air inside.
+void write_air_pumping_csv(const fs::path& path, const TyreContactTrace& t) {
+  std::ofstream out(path, std::ios::binary);
+  CsvWriter csv(out, {"time", "front_flow", "rear_flow", "closed_flow", "closed_volume", "enclosed_volume"});
+  const AirPumpingTrace& a = t.air_pumping;
+  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
+    const double row[] = {t.time(n), a.front_flow(n), a.rear_flow(n), a.closed_flow(n), a.closed_volume(n), a.enclosed_volume(n)};
+    csv.row(row, 6);
+  }
+  close_output_file(out, path);
+}
+
 void write_totals_csv(const fs::path& path, const TyreContactTrace& t) {
   std::ofstream out(path, std::ios::binary);
   CsvWriter csv(out, {"time", "total_force", "contact_area", "contact_length"});
@@ -391,6 +404,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   write_totals_csv(staged.staging() / "contact.csv", trace);
+  if (run.air_pumping) write_air_pumping_csv(staged.staging() / "air_pumping.csv", trace);
   // The snapshot at the largest total force: the most telling instant on a rough road.
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", outputs.snapshot_force(), grid);
   const std::vector<double> revolution = outputs.revolution();
@@ -491,6 +505,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   staged.commit();
   std::string written = fields == ContactFields::none ? "contact.csv, summary.json" : "contact.csv, contact.h5, summary.json";
   if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
+  if (run.air_pumping) written += ", air_pumping.csv";
   if (budget_written) written += ", budget.csv";  // the plate's estimates only
   if (sound.enabled && sound.wav) written += ", WAV files";
   if (plots) written += " and plots";
