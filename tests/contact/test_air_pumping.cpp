@@ -40,7 +40,7 @@ struct Burst {
 
 // A patch in contact over columns [first, last] of every line; the air ahead and behind 1 mm
 // deep; a cavity of `columns` × lines [j0, j1] whose gap is `depth(n)`, moving with the material
-// one column every p steps, its front column at `start` at step 0. Lines `open_line` (if ≥ 0) is
+// one column every p steps, its front column at `start` at step 0. Line `open_line` (if ≥ 0) is
 // in contact only from column `open_from`: the cavity, reaching into it, opens there.
 struct Scene {
   int window = 0, lateral = 9, first = 5, last = 0, start = 0, columns = 4, j0 = 3, j1 = 5, p = 1;
