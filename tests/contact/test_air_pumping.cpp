@@ -4,6 +4,7 @@
 // groove open at one end (its air leaves there, none is closed); the monopole's sound power over
 // the plane; and a rigidly indented patterned tyre, whose pumping pressure grows as v².
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -91,8 +92,9 @@ TEST(AirPumping, ClosedCavitySqueezedAtAKnownRateGivesItsFlowAndTheMonopolePress
     largest = std::max(largest, std::abs(expected));
     worst = std::max(worst, std::abs(s.front_flow - squeeze * area * burst.first(t - 0.5 * dt)));
   }
-  // The difference over a step is the flow at the step's middle to (ωΔt)²/24 = 1.6e-4.
-  EXPECT_LT(worst, 3e-4 * largest);
+  // The difference over a step is the flow at the step's middle to (ωΔt)²/24: 1.6e-4 at 1 kHz,
+  // 3.7e-4 at 1.5 kHz, where the burst's spectrum is still 0.6 of its peak.
+  EXPECT_LT(worst, 5e-4 * largest);
   flows(0, 0) = flows(1, 0);
 
   // The pressure 0.5 m to the side, 0.1 m up: ρ·q̇(t − r/c)/(4πr) from the source and its image,
@@ -121,6 +123,8 @@ TEST(AirPumping, ClosedCavitySqueezedAtAKnownRateGivesItsFlowAndTheMonopolePress
   // burst's ends, 1.2e-4 of its peak.
   EXPECT_GT(peak, 0.0);
   EXPECT_LT(error, 3e-3 * peak) << "peak " << peak;
+  std::printf("measured: flow at mid-step within %.2e of the peak flow, pressure within %.2e of the peak pressure\n",
+              worst / largest, error / peak);
 }
 
 TEST(AirPumping, AGrooveOpenAtTheRearLetsItsAirOutThere) {
@@ -181,6 +185,7 @@ TEST(MonopoleRadiation, SoundPowerOfAMonopoleOnARigidPlaneIsTwiceItsFreeFieldPow
     // beside 1.5 kHz, where k² and the image's factor differ: −7e-6 at h = 4 mm, −4.8e-5 at 5 cm
     // for 1000 periods (numpy's sum over the same bins, 2026-11-28; ×10 for 100 periods).
     EXPECT_NEAR(sound.total_power_w / (factor * free_field), 1.0, 1e-4) << "h = " << h;
+    std::printf("measured: h = %g m, power %+.2e relative to the analytic\n", h, sound.total_power_w / (factor * free_field) - 1.0);
   }
 }
 
@@ -233,6 +238,7 @@ TEST(AirPumping, GeometricContactPumpsAsTheSquareOfTheSpeed) {
   const double slow = rms_pressure(50.0 / 3.6, true), fast = rms_pressure(80.0 / 3.6, true);
   ASSERT_GT(slow, 0.0);
   EXPECT_NEAR(20.0 * std::log10(fast / slow) / std::log10(80.0 / 50.0), 40.0, 1e-6);
+  std::printf("measured: %.9f dB per decade\n", 20.0 * std::log10(fast / slow) / std::log10(80.0 / 50.0));
   EXPECT_LT(rms_pressure(80.0 / 3.6, false), 1e-9 * fast);
 }
 
