@@ -403,6 +403,19 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
         pattern_ring(static_cast<Eigen::Index>(m), j) = sum;
       }
   }
+  // The air in the patch (air_pumping.hpp): its flows at the steady patch's edges.
+  std::optional<AirPumping> air;
+  Eigen::VectorXd air_gap;
+  if (settings.air_pumping) {
+    air.emplace(AirPumpingGeometry{grid.window, grid.lateral, grid.dx(), grid.dy(), substeps, dt});
+    air_gap.resize(points);
+    AirPumpingTrace& a = trace.air_pumping;
+    for (Eigen::VectorXd* v : {&a.front_flow, &a.rear_flow, &a.closed_flow, &a.closed_volume, &a.enclosed_volume})
+      v->setZero(rows);
+    const ContactExtent steady_extent = contact_extent(grid, steady.force);
+    a.front_edge_x = grid.x(steady_extent.i_max) + 0.5 * grid.dx();
+    a.rear_edge_x = grid.x(steady_extent.i_min) - 0.5 * grid.dx();
+  }
   // Ctrl-C is polled every step, also when no progress is shown (a study's cases).
   const CancellationToken cancel;
   for (std::size_t n = 0; n < samples; ++n) {
@@ -502,6 +515,28 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       trace.warnings.push_back("the contact reaches the edge of the contact window at t = " + std::to_string(t) +
                                " s: lengthen [rolling] contact_window");
       edge_warned = true;
+    }
+    if (air) {
+      // The gap the contact problem has: w = G0·f + q (zero in contact), i.e. q + u − u⁰.
+      clock = std::chrono::steady_clock::now();
+      air_gap = q + deformation - u0;
+      const AirPumpingStep pumped = air->step(air_gap, force);
+      AirPumpingTrace& a = trace.air_pumping;
+      a.front_flow(row) = pumped.front_flow;
+      a.rear_flow(row) = pumped.rear_flow;
+      a.closed_flow(row) = pumped.closed_flow;
+      a.closed_volume(row) = pumped.closed_volume;
+      a.enclosed_volume(row) = pumped.enclosed_volume;
+      a.most_closed_regions = std::max(a.most_closed_regions, pumped.closed_regions);
+      // The first p steps have no state a cell back: they take the first flows there are, so
+      // that the record does not start with a jump.
+      if (pumped.ready && n == static_cast<std::size_t>(substeps))
+        for (Eigen::Index k = 0; k < row; ++k) {
+          a.front_flow(k) = pumped.front_flow;
+          a.rear_flow(k) = pumped.rear_flow;
+          a.closed_flow(k) = pumped.closed_flow;
+        }
+      a.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     }
     const auto ring = static_cast<std::size_t>(n % static_cast<std::size_t>(substeps));
     trace.input_power(row) = settings.speed * power_per_metre(grid, force, deformation, force_ring[ring],

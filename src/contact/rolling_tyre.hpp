@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "contact/air_pumping.hpp"
 #include "contact/contact_matrix_structure.hpp"
 #include "contact/history_engine.hpp"
 #include "contact/rolling_modes.hpp"
@@ -78,6 +79,9 @@ struct TyreRunSettings {
   // The tread pattern (tread_pattern.hpp), rotating with the tread through the window; none: a
   // slick, and the run is exactly that of before. Not with the texture law.
   std::shared_ptr<const TreadPattern> pattern = nullptr;
+  // Whether each step also follows the air in the patch (air_pumping.hpp) into
+  // TyreContactTrace::air_pumping; off, the run is exactly that of before.
+  bool air_pumping = false;
 };
 
 struct TyreContactTrace {
@@ -121,6 +125,8 @@ struct TyreContactTrace {
   bool laws_from_cache = false;
   double law_force_cap = 0.0;
   double largest_cell_force = 0.0;
+  // The air pumped out of the patch (TyreRunSettings::air_pumping; empty without it).
+  AirPumpingTrace air_pumping;
 };
 
 // The steady rolling state on a smooth road under load W: indentation and forces.

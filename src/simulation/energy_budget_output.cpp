@@ -128,13 +128,19 @@ std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& 
 nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget, const RadiatedSound& sound,
                                    const PointAveragedPsd& radiating, const TyreSurfaceMesh& mesh,
                                    double tyre_radius, const Medium& medium, const std::vector<Receiver>& receivers,
-                                   const std::vector<BandSpectrum>& spectra, PlotBatch* plots) {
+                                   const std::vector<BandSpectrum>& spectra, PlotBatch* plots,
+                                   const Eigen::VectorXd* air_pumping_power) {
   const std::vector<FractionalOctaveBand>& bands = budget.bands;
   // Radiated power per band, from the radiation stage's bins.
   const std::vector<double> power =
       band_sums(std::span<const double>(sound.frequency_hz.data(), static_cast<std::size_t>(sound.frequency_hz.size())),
                 std::span<const double>(sound.sound_power_w.data(), static_cast<std::size_t>(sound.sound_power_w.size())),
                 bands);
+  std::vector<double> air_power;
+  if (air_pumping_power)
+    air_power = band_sums(std::span<const double>(sound.frequency_hz.data(), static_cast<std::size_t>(sound.frequency_hz.size())),
+                          std::span<const double>(air_pumping_power->data(), static_cast<std::size_t>(air_pumping_power->size())),
+                          bands);
   // The radiating velocity: the mesh's tread cells (contact cells silenced), area-weighted.
   const auto tread = static_cast<std::size_t>(mesh.tread_points);
   double area = 0.0;
@@ -181,6 +187,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
     header.push_back("Lp_" + r.name + "_hemi_est_dB_re_20uPa");
   }
   header.push_back("horn_gain_dB");
+  if (air_pumping_power) header.push_back("Lw_air_pumping_dB_re_1pW");
   std::ofstream out(dir / "budget.csv", std::ios::binary);
   CsvWriter csv(out, header);
   const double rho_c = medium.density * medium.sound_speed;
@@ -217,6 +224,7 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
       values[c++] = lw - 10.0 * std::log10(2.0 * std::numbers::pi * distance * distance) + 10.0 * std::log10(rho_c / 400.0);
     }
     values[c++] = horn_gain_db(band.exact);
+    if (air_pumping_power) values[c++] = level_db(air_power[b], std::sqrt(power_reference));
     for (double& v : values)
       if (!std::isfinite(v)) v = -999.0;  // a zero power: no level (the CSV holds finite numbers)
     csv.row(values.data(), values.size());
@@ -249,6 +257,8 @@ nlohmann::json write_energy_budget(const fs::path& dir, const TyreBudget& budget
        << "     '' skip 1 using 1:12 with lines dt 2 lc 4 title '<v2> near est. |Y|2 F2', \\\n"
        << "     '' skip 1 using 1:13 with lines lw 1 lc 8 title '<v2> radiating (mesh)', \\\n"
        << "     '' skip 1 using 1:14 with linespoints lw 1.5 pt 7 ps 0.5 lc 6 title 'L_W (re 1 pW)', \\\n";
+    if (air_pumping_power)
+      gp << "     '' skip 1 using 1:" << header.size() << " with linespoints lw 1.5 pt 6 ps 0.6 lc 5 title 'L_W air pumping', \\\n";
     if (!receivers.empty()) {
       gp << "     '' skip 1 using 1:" << lp << " with linespoints lw 1.5 pt 9 ps 0.6 lc 7 title 'L_p " << receivers[0].name
          << "', \\\n"

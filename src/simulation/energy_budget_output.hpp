@@ -72,12 +72,14 @@ std::unique_ptr<PointAveragedPsd> radiating_velocity_psd(const TyreSurfaceMesh& 
                                                          std::size_t segment_length);
 
 // Adds the radiation lines and writes budget.csv. tyre_radius (m): of the pulsating cylinder
-// of the σ estimate; the piston has the tread's area. (and budget.gp/png into `plots` when there is one). Returns the
+// of the σ estimate; the piston has the tread's area. air_pumping_power: the air pumping's power
+// on the sound's bins (W; none: no air pumping), its own line Lw_air_pumping_dB_re_1pW beside
+// the vibration's Lw (`sound` is the vibration alone); the receivers' levels hold both. (and budget.gp/png into `plots` when there is one). Returns the
 // summary entry "energy_budget" (file name, bands, settings of the estimates).
 nlohmann::json write_energy_budget(const std::filesystem::path& dir, const TyreBudget& budget,
                                    const RadiatedSound& sound, const PointAveragedPsd& radiating,
                                    const TyreSurfaceMesh& mesh, double tyre_radius, const Medium& medium,
                                    const std::vector<Receiver>& receivers, const std::vector<BandSpectrum>& spectra,
-                                   PlotBatch* plots);
+                                   PlotBatch* plots, const Eigen::VectorXd* air_pumping_power = nullptr);
 
 }  // namespace rollnoise

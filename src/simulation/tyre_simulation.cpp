@@ -61,6 +61,19 @@ Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& gri
   return Eigen::MatrixXd::Zero(grid.points(), grid.points());
 }
 
+// The air pumping step by step (air_pumping.hpp): the flows out of the patch at its edges, the
+// closed regions' share, and the air inside.
+void write_air_pumping_csv(const fs::path& path, const TyreContactTrace& t) {
+  std::ofstream out(path, std::ios::binary);
+  CsvWriter csv(out, {"time", "front_flow", "rear_flow", "closed_flow", "closed_volume", "enclosed_volume"});
+  const AirPumpingTrace& a = t.air_pumping;
+  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
+    const double row[] = {t.time(n), a.front_flow(n), a.rear_flow(n), a.closed_flow(n), a.closed_volume(n), a.enclosed_volume(n)};
+    csv.row(row, 6);
+  }
+  close_output_file(out, path);
+}
+
 void write_totals_csv(const fs::path& path, const TyreContactTrace& t) {
   std::ofstream out(path, std::ios::binary);
   CsvWriter csv(out, {"time", "total_force", "contact_area", "contact_length"});
@@ -261,7 +274,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
       read_tyre_sound_settings(file.optional_section("radiation"), output, tyre_spec.radius, tyre_spec.width,
-                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
+                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0,
+                               /*air_pumping_default=*/pattern != nullptr);
   output.reject_unknown_keys();
   (void)make_road_surface(road_table, 0.0, 0.0, 0.0, RoadBuild::keys_only);
   const RollingTyreModel model = make_rolling_tyre_model(std::move(tyre_spec), options.cache);
@@ -318,6 +332,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
                       settings.road_sampling};
   run.contact_law = settings.contact_law;
   run.pattern = pattern;
+  // The air pumping is heard only through the radiation.
+  run.air_pumping = sound.enabled && sound.air_pumping;
   if (run.contact_law == ContactLaw::texture) {
     if (!(model.tread_youngs_modulus > 0.0))
       throw InputError(tyre.source_of(model.model == "plate" ? "tread" : "tread_youngs_modulus"),
@@ -389,6 +405,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   write_totals_csv(staged.staging() / "contact.csv", trace);
+  if (run.air_pumping) write_air_pumping_csv(staged.staging() / "air_pumping.csv", trace);
   // The snapshot at the largest total force: the most telling instant on a rough road.
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", outputs.snapshot_force(), grid);
   const std::vector<double> revolution = outputs.revolution();
@@ -428,13 +445,42 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     stages.lap("energy_budget");
     const std::string source = fs::path(file.path()).filename().string();
     PlotBatch* sound_plots = plots ? &plot_batch : nullptr;
+    // The air pumped out of the patch: a monopole at each edge of the steady patch, on the
+    // centre plane, air_pumping_source_height above the road (air_pumping.hpp).
+    std::optional<MonopoleSources> air;
+    if (run.air_pumping) {
+      const AirPumpingTrace& pumped = trace.air_pumping;
+      air.emplace();
+      air->positions.resize(3, 2);
+      air->positions.col(0) = Eigen::Vector3d(pumped.front_edge_x, 0.0, air_pumping_source_height);
+      air->positions.col(1) = Eigen::Vector3d(pumped.rear_edge_x, 0.0, air_pumping_source_height);
+      air->flows.resize(pumped.front_flow.size(), 2);
+      air->flows.col(0) = pumped.front_flow;
+      air->flows.col(1) = pumped.rear_flow;
+    }
+    const MonopoleSources* air_sources = air ? &*air : nullptr;
     const nlohmann::json heard =
-        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get())
+        sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get(),
+                                        air_sources)
                      : write_tyre_sound(staged.staging(), sound, outputs.tread_velocity(), 1.0 / dt, settings.speed, source,
-                                        sound_plots, budget.get(), options.progress);
+                                        sound_plots, budget.get(), options.progress, air_sources);
     stages.skip();
     for (const auto& [key, value] : heard.items())
       if (key != "sound_stage_times_s") summary[key] = value;
+    if (run.air_pumping) {
+      // The contact side of the air pumping: where the flows leave, and what following the air
+      // cost inside the step loop.
+      const AirPumpingTrace& pumped = trace.air_pumping;
+      nlohmann::json& entry = summary["air_pumping"];
+      entry["front_edge_x_m"] = pumped.front_edge_x;
+      entry["rear_edge_x_m"] = pumped.rear_edge_x;
+      entry["source_height_m"] = air_pumping_source_height;
+      entry["sealing_gap_m"] = air_sealing_gap;
+      entry["most_closed_regions"] = pumped.most_closed_regions;
+      entry["mean_enclosed_volume_m3"] = pumped.enclosed_volume.mean();
+      entry["mean_closed_volume_m3"] = pumped.closed_volume.mean();
+      entry["time_s"] = pumped.seconds;
+    }
     const nlohmann::json& sound_stages = heard.at("sound_stage_times_s");
     for (const auto& [key, value] : sound_stages.items()) summary["stage_times_s"][key] = value;
   }
@@ -460,6 +506,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   staged.commit();
   std::string written = fields == ContactFields::none ? "contact.csv, summary.json" : "contact.csv, contact.h5, summary.json";
   if (sound.enabled) written += ", spectrum.csv, sound_power.csv";
+  if (run.air_pumping) written += ", air_pumping.csv";
   if (budget_written) written += ", budget.csv";  // the plate's estimates only
   if (sound.enabled && sound.wav) written += ", WAV files";
   if (plots) written += " and plots";

@@ -21,6 +21,7 @@
 #include "core/byte_size.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
+#include "radiation/monopole_radiation.hpp"
 #include "radiation/radiation_cache.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/sound_report.hpp"
@@ -71,9 +72,10 @@ nlohmann::json write_sound_power(const fs::path& dir, const RadiatedSound& sound
 }  // namespace
 
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
-                                           double width, double default_max_frequency) {
+                                           double width, double default_max_frequency, bool air_pumping_default) {
   TyreSoundSettings s;
   s.enabled = radiation.boolean("enabled", true);
+  s.air_pumping = radiation.boolean("air_pumping", air_pumping_default);
   s.receivers = read_receivers(radiation, width);
   s.radiation.mesh.radius = radius;
   s.radiation.mesh.width = width;
@@ -147,14 +149,62 @@ std::unique_ptr<TyreRadiation> make_radiation(const TyreSoundSettings& settings)
   return std::make_unique<TyreRadiation>(settings.radiation, positions);
 }
 
+// summary.json's "air_pumping": the sources, their power over the band and per octave (500 Hz to
+// 4 kHz, where the air pumping is compared with measurements), beside the vibration's.
+nlohmann::json air_pumping_summary(const MonopoleSources& sources, const MonopoleSound& air, const RadiatedSound& vibration,
+                                   double highest_band_hz) {
+  const auto level = [](double w) { return 10.0 * std::log10(std::max(w, 1e-30) / 1e-12); };
+  const std::span<const double> f(vibration.frequency_hz.data(), static_cast<std::size_t>(vibration.frequency_hz.size()));
+  const std::vector<FractionalOctaveBand> octaves = fractional_octave_bands(1, 500.0, std::min(4000.0, highest_band_hz));
+  const std::vector<double> air_bands =
+      band_sums(f, std::span<const double>(air.sound_power_w.data(), static_cast<std::size_t>(air.sound_power_w.size())), octaves);
+  const std::vector<double> vibration_bands = band_sums(
+      f, std::span<const double>(vibration.sound_power_w.data(), static_cast<std::size_t>(vibration.sound_power_w.size())),
+      octaves);
+  nlohmann::json bands = nlohmann::json::array();
+  for (std::size_t b = 0; b < octaves.size(); ++b)
+    bands.push_back({{"band_hz", octaves[b].nominal},
+                     {"Lw_air_pumping_dB", level(air_bands[b])},
+                     {"Lw_vibration_dB", level(vibration_bands[b])}});
+  nlohmann::json positions = nlohmann::json::array();
+  for (Eigen::Index s = 0; s < sources.positions.cols(); ++s)
+    positions.push_back({sources.positions(0, s), sources.positions(1, s), sources.positions(2, s)});
+  double rms = 0.0;
+  for (Eigen::Index s = 0; s < sources.flows.cols(); ++s) {
+    const Eigen::ArrayXd fluctuation = sources.flows.col(s).array() - sources.flows.col(s).mean();
+    rms = std::max(rms, std::sqrt(fluctuation.square().mean()));
+  }
+  return {{"Lw_dB", level(air.total_power_w)},
+          {"total_W", air.total_power_w},
+          {"source_positions_m", positions},
+          {"largest_rms_flow_m3_per_s", rms},
+          {"octaves", bands}};
+}
+
 // The outputs from the radiation stage's results, whichever way it ran. radiating: the PSD of the
 // radiating velocity (with a budget); radiation_seconds: the stage's time.
 nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings& settings, const TyreRadiation& radiation,
-                                    const RadiatedSound& sound, const PointAveragedPsd* radiating, double radiation_seconds,
+                                    const RadiatedSound& vibration, const PointAveragedPsd* radiating, double radiation_seconds,
                                     double sample_rate, double speed, const std::string& source, PlotBatch* plots,
-                                    const TyreBudget* budget, StageTimes& stages) {
+                                    const TyreBudget* budget, const MonopoleSources* air_pumping, StageTimes& stages) {
   // Bands whose upper edge the radiation reaches: centre at most the top frequency / 2^(1/6).
-  const double highest_band = sound.highest_hz / std::pow(2.0, 1.0 / 6.0);
+  const double highest_band = vibration.highest_hz / std::pow(2.0, 1.0 / 6.0);
+  // The air pumped out of the patch, through the same road as the vibration, added to the
+  // vibration's pressure and power: what the receivers hear and the WAV files hold is the sum.
+  std::optional<MonopoleSound> air;
+  RadiatedSound with_air;
+  if (air_pumping) {
+    Eigen::Matrix3Xd positions(3, static_cast<Eigen::Index>(settings.receivers.size()));
+    for (std::size_t r = 0; r < settings.receivers.size(); ++r)
+      positions.col(static_cast<Eigen::Index>(r)) = settings.receivers[r].position;
+    air = radiate_monopoles(*air_pumping, sample_rate, positions, vibration.delays_s, vibration.lowest_hz,
+                            vibration.highest_hz, vibration.frequency_hz, settings.radiation.medium, rigid_road_green());
+    with_air = vibration;
+    with_air.pressure += air->pressure;
+    with_air.sound_power_w += air->sound_power_w;
+    stages.lap("air_pumping");
+  }
+  const RadiatedSound& sound = air ? with_air : vibration;
 
   // Each receiver at the audio rate, looped (without clicks) to the WAV's length.
   std::vector<ReceiverSignal> signals;
@@ -188,9 +238,9 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
   stages.lap("sound_power");
   if (budget) {
     if (!radiating) throw std::logic_error("write_tyre_sound: a budget without the radiating velocity's PSD");
-    result["energy_budget"] = write_energy_budget(dir, *budget, sound, *radiating, radiation.mesh(),
+    result["energy_budget"] = write_energy_budget(dir, *budget, vibration, *radiating, radiation.mesh(),
                                                   settings.radiation.mesh.radius, settings.radiation.medium,
-                                                  settings.receivers, spectra, plots);
+                                                  settings.receivers, spectra, plots, air ? &air->sound_power_w : nullptr);
     stages.lap("energy_budget_output");
   }
 
@@ -268,6 +318,7 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
                          // what the study gave this case, else one per core).
                          {"threads", radiation_thread_limit(settings.radiation)},
                          {"time_s", radiation_seconds}};
+  if (air) result["air_pumping"] = air_pumping_summary(*air_pumping, *air, vibration, highest_band);
   stages.lap("sound_summary");
   result["sound_stage_times_s"] = stages.json();  // tyre_simulation.cpp folds it into stage_times_s
   return result;
@@ -277,7 +328,8 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
-                                const std::string& source, PlotBatch* plots, const TyreBudget* budget, bool progress) {
+                                const std::string& source, PlotBatch* plots, const TyreBudget* budget, bool progress,
+                                const MonopoleSources* air_pumping) {
   const auto started = std::chrono::steady_clock::now();
   StageTimes stages;
   const std::unique_ptr<TyreRadiation> radiation = make_radiation(settings);
@@ -301,7 +353,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
     stages.lap("energy_budget_output");
   }
   return write_radiated_sound(dir, settings, *radiation, sound, radiating.get(), radiation_seconds, sample_rate, speed, source,
-                              plots, budget, stages);
+                              plots, budget, air_pumping, stages);
 }
 
 bool TyreSoundStream::wanted(std::size_t samples, double sample_rate) {
@@ -338,7 +390,8 @@ void TyreSoundStream::push(std::span<const double> tread_velocity) {
 }
 
 nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream, double speed,
-                                const std::string& source, PlotBatch* plots, const TyreBudget* budget) {
+                                const std::string& source, PlotBatch* plots, const TyreBudget* budget,
+                                const MonopoleSources* air_pumping) {
   if (!stream.stream_) throw std::logic_error("write_tyre_sound: nothing was pushed to the radiation stream");
   const auto started = std::chrono::steady_clock::now();
   StageTimes stages;
@@ -350,7 +403,7 @@ nlohmann::json write_tyre_sound(const fs::path& dir, const TyreSoundSettings& se
   if (budget && budget->segment_length != stream.budget_segment_)
     throw std::logic_error("write_tyre_sound: the budget's Welch segment is not the stream's");
   return write_radiated_sound(dir, settings, *stream.radiation_, sound, stream.radiating_.get(), radiation_seconds,
-                              stream.sample_rate_, speed, source, plots, budget, stages);
+                              stream.sample_rate_, speed, source, plots, budget, air_pumping, stages);
 }
 
 }  // namespace rollnoise

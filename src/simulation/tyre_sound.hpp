@@ -16,6 +16,7 @@
 
 #include "core/cache_limit.hpp"
 #include "core/gnuplot.hpp"
+#include "radiation/monopole_radiation.hpp"
 #include "radiation/receivers.hpp"
 #include "radiation/tyre_radiation.hpp"
 
@@ -31,6 +32,11 @@ struct TyreBudget;
 struct TyreSoundSettings {
   bool enabled = true;
   TyreRadiationSettings radiation;
+  // [radiation] air_pumping: the air pumped out of the contact patch radiated as monopoles at
+  // its edges (contact/air_pumping.hpp, radiation/monopole_radiation.hpp), added to the
+  // receivers, the sound power and the WAV files. By default on for a tyre with a tread pattern,
+  // off for a slick (docs/physics/air-pumping.md, "The default").
+  bool air_pumping = false;
   std::vector<Receiver> receivers;
   bool wav = true;
   double audio_rate = 48000.0;  // Hz: 48000 or 44100
@@ -45,14 +51,15 @@ struct TyreSoundSettings {
   ProgressSink* progress_sink = nullptr;
 };
 
-// [radiation] enabled, receivers, max_frequency, anchor_spacing, mesh_around, mesh_across,
-// sidewall_rings, contact_refinement, threads, cache_limit, geometry ("deformed": the caller sets
-// radiation.mesh.deformation from the contact solution; "undeformed"); [output] wav, audio_rate,
-// wav_duration. The tyre's radius and width (m) shape the radiating body.
+// [radiation] enabled, air_pumping (default `air_pumping_default`), receivers, max_frequency,
+// anchor_spacing, mesh_around, mesh_across, sidewall_rings, contact_refinement, threads,
+// cache_limit, geometry ("deformed": the caller sets radiation.mesh.deformation from the contact
+// solution; "undeformed"); [output] wav, audio_rate, wav_duration. The tyre's radius and width (m) shape the radiating body.
 // `default_max_frequency` (Hz): max_frequency when the case does not give it (the upper edge of
 // the [rolling] band_top band). Bad values are InputErrors naming the key.
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
-                                           double width, double default_max_frequency = 5623.4);
+                                           double width, double default_max_frequency = 5623.4,
+                                           bool air_pumping_default = false);
 
 // Empty when every receiver is outside the radiating body of `settings` (the deformed tyre once
 // its patch is set); otherwise the message naming the first inside it.
@@ -64,10 +71,13 @@ std::string receivers_outside_tyre(const TyreSoundSettings& settings);
 // (outward normal velocity, m/s) at `sample_rate`; speed in m/s. With a `budget` (the contact and
 // response lines of the run), also budget.csv and its plot (energy_budget_output.hpp) and the
 // summary entry "energy_budget". progress: a progress bar over the anchors on a terminal.
+// air_pumping: the monopoles of the air pumped out of the patch, sampled as the velocity
+// (none: no air pumping); their pressure is added to the receivers' and their power to the
+// sound power, and the summary gains "air_pumping" (and budget.csv its line).
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings,
                                 const Eigen::MatrixXd& tread_velocity, double sample_rate, double speed,
                                 const std::string& source, PlotBatch* plots, const TyreBudget* budget = nullptr,
-                                bool progress = true);
+                                bool progress = true, const MonopoleSources* air_pumping = nullptr);
 
 // The radiation stage fed the tread velocity sample by sample as the run makes it, for a run too
 // long to keep the whole record (issue 13: samples × tread points in doubles, 3 GB for 10 s at
@@ -96,7 +106,7 @@ class TyreSoundStream {
 
  private:
   friend nlohmann::json write_tyre_sound(const std::filesystem::path&, const TyreSoundSettings&, TyreSoundStream&, double,
-                                         const std::string&, PlotBatch*, const TyreBudget*);
+                                         const std::string&, PlotBatch*, const TyreBudget*, const MonopoleSources*);
   const TyreSoundSettings& settings_;
   std::size_t samples_;
   double sample_rate_;
@@ -113,6 +123,7 @@ class TyreSoundStream {
 // write_tyre_sound for a run whose tread velocity went through `stream` (all its samples
 // pushed): the same outputs.
 nlohmann::json write_tyre_sound(const std::filesystem::path& dir, const TyreSoundSettings& settings, TyreSoundStream& stream,
-                                double speed, const std::string& source, PlotBatch* plots, const TyreBudget* budget = nullptr);
+                                double speed, const std::string& source, PlotBatch* plots, const TyreBudget* budget = nullptr,
+                                const MonopoleSources* air_pumping = nullptr);
 
 }  // namespace rollnoise

@@ -23,7 +23,7 @@ const std::vector<std::string>& known_keys(const std::string& section) {
   static const std::vector<std::string> radiation = {
       "enabled",      "receivers",      "max_frequency",         "anchor_spacing",         "mesh_around",
       "mesh_across",  "sidewall_rings", "contact_refinement",    "threads",                "points_per_wavelength",
-      "combined_sources_above", "geometry", "cache_limit"};
+      "combined_sources_above", "geometry", "cache_limit", "air_pumping"};
   static const std::vector<std::string> output = {"plots", "wav", "audio_rate", "wav_duration", "fields"};
   static const std::vector<std::string> tyre = {"file", "model"};
   static const std::vector<std::string> road = {"surface", "type"};
