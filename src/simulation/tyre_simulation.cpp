@@ -274,8 +274,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   // max_frequency says otherwise; with band_top = 0 the old default, 3 kHz.
   TyreSoundSettings sound =
       read_tyre_sound_settings(file.optional_section("radiation"), output, tyre_spec.radius, tyre_spec.width,
-                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0,
-                               /*air_pumping_default=*/pattern != nullptr);
+                               settings.band_top > 0.0 ? band_top_edge(settings.band_top) : 3000.0);
   output.reject_unknown_keys();
   (void)make_road_surface(road_table, 0.0, 0.0, 0.0, RoadBuild::keys_only);
   const RollingTyreModel model = make_rolling_tyre_model(std::move(tyre_spec), options.cache);

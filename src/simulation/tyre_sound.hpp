@@ -51,15 +51,14 @@ struct TyreSoundSettings {
   ProgressSink* progress_sink = nullptr;
 };
 
-// [radiation] enabled, air_pumping (default `air_pumping_default`), receivers, max_frequency,
+// [radiation] enabled, air_pumping (default false: docs/physics/air-pumping.md), receivers, max_frequency,
 // anchor_spacing, mesh_around, mesh_across, sidewall_rings, contact_refinement, threads,
 // cache_limit, geometry ("deformed": the caller sets radiation.mesh.deformation from the contact
 // solution; "undeformed"); [output] wav, audio_rate, wav_duration. The tyre's radius and width (m) shape the radiating body.
 // `default_max_frequency` (Hz): max_frequency when the case does not give it (the upper edge of
 // the [rolling] band_top band). Bad values are InputErrors naming the key.
 TyreSoundSettings read_tyre_sound_settings(const ConfigTable& radiation, const ConfigTable& output, double radius,
-                                           double width, double default_max_frequency = 5623.4,
-                                           bool air_pumping_default = false);
+                                           double width, double default_max_frequency = 5623.4);
 
 // Empty when every receiver is outside the radiating body of `settings` (the deformed tyre once
 // its patch is set); otherwise the message naming the first inside it.

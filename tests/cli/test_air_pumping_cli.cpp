@@ -54,10 +54,11 @@ TEST(AirPumpingCli, ASlickWithTheKeyOffOrLeftOutWritesWhatItWroteBefore) {
   EXPECT_FALSE(contains(first_line(ws.path("default") / "budget.csv"), "air_pumping"));
 }
 
-TEST(AirPumpingCli, APatternedTyrePumpsByDefaultAndTheKeyTurnsItOff) {
+// Off by default (docs/physics/air-pumping.md, "The default"), for a patterned tyre too.
+TEST(AirPumpingCli, APatternedTyrePumpsWhenTheKeyTurnsItOnAndNotByDefault) {
   Workspace ws;
-  ws.write("on.toml", short_case(patterned));
-  ws.write("off.toml", short_case(patterned, "air_pumping = false\n"));
+  ws.write("on.toml", short_case(patterned, "air_pumping = true\n"));
+  ws.write("off.toml", short_case(patterned));
   const RunResult a = ws.run({"simulate", "on.toml", "--out", "on"});
   ASSERT_EQ(a.status, 0) << describe(a);
   const RunResult b = ws.run({"simulate", "off.toml", "--out", "off"});
