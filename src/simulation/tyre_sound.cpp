@@ -267,6 +267,9 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
                          // The threads the anchors were solved on, at most ([radiation] threads, or
                          // what the study gave this case, else one per core).
                          {"threads", radiation_thread_limit(settings.radiation)},
+                         // The plane the sources see: the rigid road, or the impedance plane of
+                         // the road's [road.absorption] (docs/physics/absorbing-roads.md).
+                         {"road", settings.radiation.admittance ? "impedance plane" : "rigid"},
                          {"time_s", radiation_seconds}};
   stages.lap("sound_summary");
   result["sound_stage_times_s"] = stages.json();  // tyre_simulation.cpp folds it into stage_times_s
