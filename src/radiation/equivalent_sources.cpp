@@ -78,7 +78,7 @@ struct SourceKernel {
 //   n_xᵀ(∇_x∇_sᵀC)n_s = −C_rr(n_x·e)(n_s·e) − (C_r/r)(n_xh·n_sh − (n_x·e)(n_s·e))
 //                        + C_rZ[(n_x·e)n_sz − n_xz(n_s·e)] + C_ZZ n_xz n_sz.
 struct ReflectionKernel {
-  const HalfSpaceGreen& green;
+  const HalfSpaceGreen* green = nullptr;  // null: the rigid road (no correction)
   double monopole = 0.0;  // η_k
   bool combined = false;
 
@@ -89,7 +89,7 @@ struct ReflectionKernel {
   Pair pair(const double* x, const double* s) const {
     const double dx = x[0] - s[0], dy = x[1] - s[1];
     const double r = std::sqrt(dx * dx + dy * dy);
-    Pair p{green.correction(r, x[2] + s[2])};
+    Pair p{green->correction(r, x[2] + s[2])};
     if (r > 0.0) {
       p.ex = dx / r;
       p.ey = dy / r;
@@ -295,8 +295,7 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<
   const Complex beta = plane_admittance(k * medium_.sound_speed);
   std::optional<HalfSpaceGreen> road;
   if (beta != 0.0 && count > 0) road.emplace(k, beta, reflection_region(x, sources_));
-  const std::optional<ReflectionKernel> reflection =
-      road ? std::optional<ReflectionKernel>(ReflectionKernel{*road, kernel.monopole, kernel.combined}) : std::nullopt;
+  const ReflectionKernel reflection{road ? &*road : nullptr, kernel.monopole, kernel.combined};
   for (Eigen::Index j = 0; j < sources_.cols(); ++j) {
     const Eigen::Vector3d s = sources_.col(j), ns = source_normals_.col(j);
     const Eigen::Vector3d image = mirrored(s), image_normal = mirrored(ns);
@@ -304,7 +303,7 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<
     for (Eigen::Index i = 0; i < count; ++i) {
       Complex value = kernel.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
       if (rigid_plane_) value += kernel.velocity(x.col(i).data(), n.col(i).data(), image.data(), image_normal.data());
-      if (reflection) value += reflection->velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
+      if (reflection.green) value += reflection.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
       column[i] = row_scale_.size() ? row_scale_(rows[static_cast<std::size_t>(i)]) * value : value;
     }
   }
@@ -333,7 +332,7 @@ Eigen::MatrixXcd EquivalentSources::pressure_matrix(double omega, const Eigen::M
   // cheaper than the exact function for every source; many points (the surface) share one.
   const auto add = [&](const Eigen::Matrix3Xd& points, Eigen::Index first) {
     const HalfSpaceGreen road(k, beta, reflection_region(points, sources_));
-    const ReflectionKernel reflection{road, kernel.monopole, kernel.combined};
+    const ReflectionKernel reflection{&road, kernel.monopole, kernel.combined};
     for (Eigen::Index j = 0; j < sources_.cols(); ++j)
       for (Eigen::Index r = 0; r < points.cols(); ++r)
         p(first + r, j) += factor * reflection.field(points.col(r).data(), sources_.col(j).data(), source_normals_.col(j).data());

@@ -60,8 +60,9 @@ double ReflectedFieldTable::spacing_for(double k, std::complex<double> admittanc
   const double far = std::hypot(r_max, z_max);
   const double angle = std::max(std::abs(admittance), 1.0 / std::sqrt(std::max(1.0, k * far)));
   // Measured (tests/radiation/test_half_space_green.cpp): with 0.3 of that scale, at most
-  // 0.06 rad, and quintic stencils, C within 2e-5 of the image's field and its first
-  // derivatives within 4e-5 over the tyre's region from 20 Hz to 5.6 kHz.
+  // 0.06 rad, and quintic stencils, C within 1.3e-5 of the image's field, its first
+  // derivatives within 3e-5 and its second within 1.1e-4 (relative to the image's, k + 1/R₂
+  // a derivative) over the tyre's region from 20 Hz to 5.6 kHz.
   return std::clamp(0.3 * angle, 0.005, 0.06);
 }
 
