@@ -86,10 +86,10 @@ struct ReflectionKernel {
     ReflectedField c;
     double ex = 0.0, ey = 0.0;
   };
-  Pair pair(const double* x, const double* s) const {
+  Pair pair(const double* x, const double* s, int derivatives) const {
     const double dx = x[0] - s[0], dy = x[1] - s[1];
     const double r = std::sqrt(dx * dx + dy * dy);
-    Pair p{green->correction(r, x[2] + s[2])};
+    Pair p{green->correction(r, x[2] + s[2], derivatives)};
     if (r > 0.0) {
       p.ex = dx / r;
       p.ey = dy / r;
@@ -98,14 +98,14 @@ struct ReflectionKernel {
   }
 
   Complex field(const double* x, const double* s, const double* ns) const {
-    const Pair p = pair(x, s);
+    const Pair p = pair(x, s, combined ? 1 : 0);
     if (!combined) return p.c.value;
     const double se = ns[0] * p.ex + ns[1] * p.ey;
     return -p.c.dr * se + p.c.dz * ns[2] + Complex(0.0, monopole) * p.c.value;
   }
 
   Complex velocity(const double* x, const double* nx, const double* s, const double* ns) const {
-    const Pair p = pair(x, s);
+    const Pair p = pair(x, s, combined ? 2 : 1);
     const double xe = nx[0] * p.ex + nx[1] * p.ey;
     const Complex single = -p.c.dr * xe - p.c.dz * nx[2];
     if (!combined) return single;
@@ -646,7 +646,7 @@ std::vector<Eigen::MatrixXcd> EquivalentSources::far_field_power_blocks(double o
   const double diameter = std::hypot(horizontal, 2.0 * hi.z());
   const auto nodes = [&](double extent, double length) { return static_cast<int>(std::ceil(0.35 * k * extent * length)) + 12; };
   const double edge = std::clamp(4.0 * std::abs(admittance), 0.02, 0.5);
-  std::vector<double> theta, theta_weight, phi, phi_weight;
+  std::vector<double> theta, theta_weight;
   const auto add_panel = [](std::vector<double>& x, std::vector<double>& w, double a, double b, int count) {
     const GaussRule rule = gauss_legendre_rule(count);
     for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
@@ -656,8 +656,20 @@ std::vector<Eigen::MatrixXcd> EquivalentSources::far_field_power_blocks(double o
   };
   add_panel(theta, theta_weight, 0.0, 0.5 * pi - edge, nodes(diameter, 0.5 * pi - edge));
   add_panel(theta, theta_weight, 0.5 * pi - edge, 0.5 * pi, nodes(diameter, edge) + 4);
-  add_panel(phi, phi_weight, phi_lo, phi_hi, nodes(horizontal, phi_hi - phi_lo));
-  const auto directions = static_cast<Eigen::Index>(theta.size() * phi.size());
+  // Each ring of θ its own azimuths: the phase turns at k·sin θ·D_h per radian of φ.
+  struct Direction {
+    std::size_t ring;
+    double x, y, weight;
+  };
+  std::vector<Direction> directions;
+  for (std::size_t t = 0; t < theta.size(); ++t) {
+    std::vector<double> phi, phi_weight;
+    const double st = std::sin(theta[t]);
+    add_panel(phi, phi_weight, phi_lo, phi_hi, nodes(horizontal * st, phi_hi - phi_lo));
+    for (std::size_t a = 0; a < phi.size(); ++a)
+      directions.push_back({t, st * std::cos(phi[a]), st * std::sin(phi[a]), std::sqrt(theta_weight[t] * st * phi_weight[a])});
+  }
+  const auto count = static_cast<Eigen::Index>(directions.size());
   // The blocks' orbits (unsplit: every source its own orbit of the trivial group).
   std::vector<std::vector<Eigen::Index>> block_orbits;
   if (basis)
@@ -672,31 +684,34 @@ std::vector<Eigen::MatrixXcd> EquivalentSources::far_field_power_blocks(double o
     out.push_back(Eigen::MatrixXcd::Zero(size, size));
   }
   // Chunks of directions: f for every source there, the blocks' symmetrised patterns, and
-  // S_c += F_cᴴF_c (zherk, lower triangle).
+  // S_c += F_cᴴF_c (zherk, lower triangle). e^{ik cos θ·s_z} once per ring.
   constexpr Eigen::Index kChunk = 256;
   const Complex ik(0.0, k);
   Eigen::MatrixXcd f(kChunk, n);
   std::vector<Eigen::MatrixXcd> patterns(out.size());
-  for (Eigen::Index first = 0; first < directions; first += kChunk) {
-    const Eigen::Index rows = std::min(kChunk, directions - first);
+  std::vector<Complex> up(static_cast<std::size_t>(n));
+  std::size_t ring = theta.size();  // none yet
+  for (Eigen::Index first = 0; first < count; first += kChunk) {
+    const Eigen::Index rows = std::min(kChunk, count - first);
     for (Eigen::Index d = 0; d < rows; ++d) {
-      const auto t = static_cast<std::size_t>((first + d) / static_cast<Eigen::Index>(phi.size()));
-      const auto a = static_cast<std::size_t>((first + d) % static_cast<Eigen::Index>(phi.size()));
-      const double st = std::sin(theta[t]), ct = std::cos(theta[t]);
-      const Eigen::Vector3d dir(st * std::cos(phi[a]), st * std::sin(phi[a]), ct);
+      const Direction& direction = directions[static_cast<std::size_t>(first + d)];
+      const double ct = std::cos(theta[direction.ring]);
+      if (direction.ring != ring) {
+        ring = direction.ring;
+        for (Eigen::Index j = 0; j < n; ++j) up[static_cast<std::size_t>(j)] = std::polar(1.0, k * ct * sources_(2, j));
+      }
       const Complex reflection = (ct - admittance) / (ct + admittance);
-      const double weight = std::sqrt(theta_weight[t] * st * phi_weight[a]);
       for (Eigen::Index j = 0; j < n; ++j) {
         const double* s = sources_.col(j).data();
-        const Complex horizontal_phase = std::polar(weight, k * (dir.x() * s[0] + dir.y() * s[1]));
-        const Complex up = std::polar(1.0, k * dir.z() * s[2]);
-        const Complex direct = horizontal_phase * up, image = horizontal_phase * std::conj(up);
+        const Complex horizontal_phase = std::polar(direction.weight, k * (direction.x * s[0] + direction.y * s[1]));
+        const Complex u = up[static_cast<std::size_t>(j)];
+        const Complex direct = horizontal_phase * u, image = horizontal_phase * std::conj(u);
         if (!combined) {
           f(d, j) = direct + reflection * image;
         } else {
           const double* ns = source_normals_.col(j).data();
-          const double across = dir.x() * ns[0] + dir.y() * ns[1];
-          f(d, j) = ik * ((across + dir.z() * ns[2] + eta) * direct + reflection * (across - dir.z() * ns[2] + eta) * image);
+          const double across = direction.x * ns[0] + direction.y * ns[1];
+          f(d, j) = ik * ((across + ct * ns[2] + eta) * direct + reflection * (across - ct * ns[2] + eta) * image);
         }
       }
     }

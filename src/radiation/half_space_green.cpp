@@ -49,16 +49,21 @@ HalfSpaceGreen::HalfSpaceGreen(double k, std::complex<double> admittance, std::o
   }
 }
 
-ReflectedField HalfSpaceGreen::exact_correction(double r, double z) const {
+ReflectedField HalfSpaceGreen::exact_correction(double r, double z, int derivatives) const {
   ReflectedField out{};
   if (rigid()) return out;
   const double radius = std::hypot(r, z);
   const double hz = 1e-4 * z, hr = 1e-4 * radius;
   const auto c = [&](double rr, double zz) { return impedance_plane_correction(k_, std::abs(rr), zz, admittance_); };
   out.value = c(r, z);
+  if (derivatives == 0) return out;
   const Complex rp = c(r + hr, z), rm = c(r - hr, z), zp = c(r, z + hz), zm = c(r, z - hz);
   out.dr = (rp - rm) / (2.0 * hr);
   out.dz = (zp - zm) / (2.0 * hz);
+  if (derivatives == 1) {
+    out.dr_over_r = r > 0.0 ? out.dr / r : Complex(0.0);
+    return out;
+  }
   out.drr = (rp - 2.0 * out.value + rm) / (hr * hr);
   out.dzz = (zp - 2.0 * out.value + zm) / (hz * hz);
   out.drz = (c(r + hr, z + hz) - c(r + hr, z - hz) - c(r - hr, z + hz) + c(r - hr, z - hz)) / (4.0 * hr * hz);
@@ -66,10 +71,10 @@ ReflectedField HalfSpaceGreen::exact_correction(double r, double z) const {
   return out;
 }
 
-ReflectedField HalfSpaceGreen::correction(double r, double z) const {
+ReflectedField HalfSpaceGreen::correction(double r, double z, int derivatives) const {
   if (rigid()) return ReflectedField{};
-  if (table_ && table_->covers(r, z)) return (*table_)(r, z);
-  return exact_correction(r, z);
+  if (table_ && table_->covers(r, z)) return (*table_)(r, z, derivatives);
+  return exact_correction(r, z, derivatives);
 }
 
 std::complex<double> HalfSpaceGreen::operator()(const Eigen::Vector3d& x, const Eigen::Vector3d& s) const {
@@ -79,7 +84,7 @@ std::complex<double> HalfSpaceGreen::operator()(const Eigen::Vector3d& x, const 
   const double r = std::hypot(x.x() - s.x(), x.y() - s.y());
   // Only the value is needed: no differences.
   const double z = x.z() + s.z();
-  if (table_ && table_->covers(r, z)) return g + (*table_)(r, z).value;
+  if (table_ && table_->covers(r, z)) return g + (*table_)(r, z, 0).value;
   return g + impedance_plane_correction(k_, r, z, admittance_);
 }
 
@@ -89,7 +94,7 @@ Eigen::Vector3cd HalfSpaceGreen::gradient(const Eigen::Vector3d& x, const Eigen:
   if (rigid()) return g;
   const double dx = x.x() - s.x(), dy = x.y() - s.y();
   const double r = std::hypot(dx, dy);
-  const ReflectedField c = correction(r, x.z() + s.z());
+  const ReflectedField c = correction(r, x.z() + s.z(), 1);
   // ∇_x C = ∂C/∂r·(x_h − s_h)/r + ∂C/∂Z·ẑ.
   if (r > 0.0) {
     g.x() += c.dr * (dx / r);

@@ -39,12 +39,12 @@ class HalfSpaceGreen {
   // How many exact evaluations the table took (0: no table).
   std::size_t table_nodes() const noexcept { return table_ ? table_->nodes() : 0; }
 
-  // C and its derivatives in r and Z (zero when rigid): from the table where it covers (r, Z),
-  // else exact.
-  ReflectedField correction(double r, double z) const;
+  // C and its derivatives in r and Z up to the order `derivatives` (0, 1 or 2; zero when
+  // rigid): from the table where it covers (r, Z), else exact.
+  ReflectedField correction(double r, double z, int derivatives = 2) const;
   // The exact C with derivatives by central differences (steps 1e-4 of Z and of R₂; their
   // truncation and the quadrature's rounding are below 1e-7 of the image's field).
-  ReflectedField exact_correction(double r, double z) const;
+  ReflectedField exact_correction(double r, double z, int derivatives = 2) const;
 
   // G(x, s) and ∇_x G (x and s above the road, x ≠ s).
   std::complex<double> operator()(const Eigen::Vector3d& x, const Eigen::Vector3d& s) const;

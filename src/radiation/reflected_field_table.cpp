@@ -19,9 +19,22 @@ struct Weights {
   std::array<double, kMaxOrder> w{}, d1{}, d2{};
 };
 
+// Π_{n≠m}(m − n) for the nodes 0 … order − 1.
+constexpr std::array<double, kMaxOrder> denominators(int order) {
+  std::array<double, kMaxOrder> out{};
+  for (int m = 0; m < order; ++m) {
+    double d = 1.0;
+    for (int n = 0; n < order; ++n)
+      if (n != m) d *= m - n;
+    out[static_cast<std::size_t>(m)] = d;
+  }
+  return out;
+}
+constexpr std::array<double, kMaxOrder> kDenominators4 = denominators(4), kDenominators6 = denominators(6);
+
 // Π_{n≠m}(t − n) as the product of the factors before m and those after, each carried with its
 // first and second derivatives (the product rule), then divided by Π_{n≠m}(m − n).
-Weights lagrange(double t, int order) {
+Weights lagrange(double t, int order, int derivatives) {
   struct Jet {
     double p = 1.0, d1 = 0.0, d2 = 0.0;
     void times(double f) {
@@ -39,17 +52,16 @@ Weights lagrange(double t, int order) {
     after[static_cast<std::size_t>(m)] = after[static_cast<std::size_t>(m + 1)];
     after[static_cast<std::size_t>(m)].times(t - (m + 1));
   }
+  const std::array<double, kMaxOrder>& denominator = order == 4 ? kDenominators4 : kDenominators6;
   Weights out;
   for (int m = 0; m < order; ++m) {
-    double denominator = 1.0;
-    for (int n = 0; n < order; ++n)
-      if (n != m) denominator *= m - n;
     const auto q = static_cast<std::size_t>(m);
     const Jet& a = before[q];
     const Jet& b = after[q];
-    out.w[q] = a.p * b.p / denominator;
-    out.d1[q] = (a.d1 * b.p + a.p * b.d1) / denominator;
-    out.d2[q] = (a.d2 * b.p + 2.0 * a.d1 * b.d1 + a.p * b.d2) / denominator;
+    const double inverse = 1.0 / denominator[q];
+    out.w[q] = a.p * b.p * inverse;
+    if (derivatives > 0) out.d1[q] = (a.d1 * b.p + a.p * b.d1) * inverse;
+    if (derivatives > 1) out.d2[q] = (a.d2 * b.p + 2.0 * a.d1 * b.d1 + a.p * b.d2) * inverse;
   }
   return out;
 }
@@ -118,14 +130,14 @@ bool ReflectedFieldTable::covers(double r, double z) const noexcept {
   return xi >= xi0_region_ - slack && xi <= xi_max_ + slack && psi >= psi0_region_ - slack && psi <= psi_max_ + slack;
 }
 
-ReflectedField ReflectedFieldTable::operator()(double r, double z) const {
+ReflectedField ReflectedFieldTable::operator()(double r, double z, int derivatives) const {
   const double r2sq = r * r + z * z;
   const double radius = std::sqrt(r2sq);
   const double xi = std::log(radius);
   const double psi = std::atan2(z, r);
   const auto stencil = [&](double u, int n, int& start) {
     start = std::clamp(static_cast<int>(std::floor(u)) - (order_ / 2 - 1), 0, n - order_);
-    return lagrange(u - start, order_);
+    return lagrange(u - start, order_, derivatives);
   };
   int i0 = 0, j0 = 0;
   const Weights a = stencil((xi - xi0_) / h_, nxi_, i0);
@@ -135,12 +147,11 @@ ReflectedField ReflectedFieldTable::operator()(double r, double z) const {
   for (int m = 0; m < order_; ++m) {
     const Complex* row = &values_[static_cast<std::size_t>(i0 + m) * static_cast<std::size_t>(npsi_) + static_cast<std::size_t>(j0)];
     Complex v = 0.0, vp = 0.0, vpp = 0.0;
-    for (int n = 0; n < order_; ++n) {
-      const auto q = static_cast<std::size_t>(n);
-      v += b.w[q] * row[n];
-      vp += b.d1[q] * row[n];
-      vpp += b.d2[q] * row[n];
-    }
+    for (int n = 0; n < order_; ++n) v += b.w[static_cast<std::size_t>(n)] * row[n];
+    if (derivatives > 0)
+      for (int n = 0; n < order_; ++n) vp += b.d1[static_cast<std::size_t>(n)] * row[n];
+    if (derivatives > 1)
+      for (int n = 0; n < order_; ++n) vpp += b.d2[static_cast<std::size_t>(n)] * row[n];
     const auto p = static_cast<std::size_t>(m);
     f += a.w[p] * v;
     fx += a.d1[p] * v;
@@ -156,6 +167,9 @@ ReflectedField ReflectedFieldTable::operator()(double r, double z) const {
   fpp /= hpsi_ * hpsi_;
   // C = F·E, E(ξ) = e^{−ikR}/(4πR), R = e^ξ: E′ = E(−ikR − 1), E″ = E((−ikR − 1)² − ikR).
   const Complex e = std::polar(1.0 / (4.0 * std::numbers::pi * radius), -k_ * radius);
+  ReflectedField out{};
+  out.value = f * e;
+  if (derivatives == 0) return out;
   const Complex g1(-1.0, -k_ * radius);
   const Complex e1 = e * g1;
   const Complex e2 = e * (g1 * g1 - Complex(0.0, k_ * radius));
@@ -164,12 +178,14 @@ ReflectedField ReflectedFieldTable::operator()(double r, double z) const {
   // The log-polar map ln(r + iZ) = ξ + iψ: ξ_r = r/R², ξ_Z = Z/R², ψ_r = −Z/R², ψ_Z = r/R²;
   // ξ_rr = −ξ_ZZ = ψ_rZ = (Z² − r²)/R⁴, ξ_rZ = −ψ_rr = ψ_ZZ = −2rZ/R⁴.
   const double xr = r / r2sq, xz = z / r2sq, pr = -z / r2sq, pz = r / r2sq;
-  const double r4 = r2sq * r2sq;
-  const double a1 = (z * z - r * r) / r4, a2 = -2.0 * r * z / r4;
-  ReflectedField out;
-  out.value = f * e;
   out.dr = hx * xr + hp * pr;
   out.dz = hx * xz + hp * pz;
+  if (derivatives == 1) {
+    out.dr_over_r = r > 0.0 ? out.dr / r : Complex(0.0);
+    return out;
+  }
+  const double r4 = r2sq * r2sq;
+  const double a1 = (z * z - r * r) / r4, a2 = -2.0 * r * z / r4;
   out.drr = hxx * xr * xr + 2.0 * hxp * xr * pr + hpp * pr * pr + hx * a1 - hp * a2;
   out.drz = hxx * xr * xz + hxp * (xr * pz + xz * pr) + hpp * pr * pz + hx * a2 + hp * a1;
   out.dzz = hxx * xz * xz + 2.0 * hxp * xz * pz + hpp * pz * pz - hx * a1 + hp * a2;

@@ -44,8 +44,10 @@ class ReflectedFieldTable {
 
   // Whether (r, Z) lies in the tabulated region.
   bool covers(double r, double z) const noexcept;
-  // C and its derivatives at (r, Z) (covers(r, Z) must hold).
-  ReflectedField operator()(double r, double z) const;
+  // C and its derivatives at (r, Z) (covers(r, Z) must hold), up to the order `derivatives`
+  // (0, 1 or 2; the higher ones are left zero: a monopole's velocity needs the first, a
+  // combined source's the second).
+  ReflectedField operator()(double r, double z, int derivatives = 2) const;
 
   std::size_t nodes() const noexcept { return values_.size(); }
   // The spacing of the table's nodes that interpolates C to about 1e-5 of the image's field
