@@ -331,7 +331,10 @@ Eigen::MatrixXcd EquivalentSources::pressure_matrix(double omega, const Eigen::M
   // microphones) each get a table over their own pairs, which is small where they are far and
   // cheaper than the exact function for every source; many points (the surface) share one.
   const auto add = [&](const Eigen::Matrix3Xd& points, Eigen::Index first) {
-    const HalfSpaceGreen road(k, beta, reflection_region(points, sources_));
+    // The exact function for few pairs (1 evaluation each for monopoles, 5 for combined sources'
+    // first derivatives), a table when that is cheaper.
+    const auto evaluations = static_cast<std::size_t>(points.cols() * sources_.cols() * (kernel.combined ? 5 : 1));
+    const HalfSpaceGreen road(k, beta, reflection_region(points, sources_), evaluations);
     const ReflectionKernel reflection{&road, kernel.monopole, kernel.combined};
     for (Eigen::Index j = 0; j < sources_.cols(); ++j)
       for (Eigen::Index r = 0; r < points.cols(); ++r)

@@ -38,11 +38,15 @@ ReflectionRegion reflection_region(const Eigen::Matrix3Xd& points, const Eigen::
   return out;
 }
 
-HalfSpaceGreen::HalfSpaceGreen(double k, std::complex<double> admittance, std::optional<ReflectionRegion> region)
+HalfSpaceGreen::HalfSpaceGreen(double k, std::complex<double> admittance, std::optional<ReflectionRegion> region,
+                               std::size_t evaluations)
     : k_(k), admittance_(admittance) {
   if (!(k > 0.0) || !std::isfinite(k) || !std::isfinite(admittance.real()) || !std::isfinite(admittance.imag()) ||
       admittance.real() < 0.0)
     throw std::invalid_argument("half-space Green's function: k > 0 and a finite admittance with Re β >= 0 needed");
+  if (region && !rigid() && evaluations > 0 &&
+      ReflectedFieldTable::estimated_nodes(k, admittance, region->r_max, region->z_min, region->z_max) >= evaluations)
+    region.reset();
   if (region && !rigid()) {
     const double spacing = ReflectedFieldTable::spacing_for(k, admittance, region->r_max, region->z_max);
     table_.emplace(k, admittance, region->r_max, region->z_min, region->z_max, spacing);

@@ -30,8 +30,10 @@ ReflectionRegion reflection_region(const Eigen::Matrix3Xd& points, const Eigen::
 class HalfSpaceGreen {
  public:
   // k > 0 (1/m); β with Re β ≥ 0, finite (0: the rigid road); a table over `region` when given
-  // (and β ≠ 0). Bad arguments: std::invalid_argument.
-  HalfSpaceGreen(double k, std::complex<double> admittance, std::optional<ReflectionRegion> region = std::nullopt);
+  // (and β ≠ 0), unless `evaluations` (> 0: about how many exact evaluations the caller's pairs
+  // would take without one) is fewer than the table's nodes. Bad arguments: std::invalid_argument.
+  HalfSpaceGreen(double k, std::complex<double> admittance, std::optional<ReflectionRegion> region = std::nullopt,
+                 std::size_t evaluations = 0);
 
   bool rigid() const noexcept { return admittance_ == 0.0; }
   double wavenumber() const noexcept { return k_; }

@@ -13,6 +13,9 @@ namespace {
 
 using Complex = std::complex<double>;
 constexpr int kMaxOrder = 6;
+// The nodes' line integrals to 1e-10 of the image's field: far below the interpolation's 1e-5,
+// and fewer Gauss–Kronrod panels than impedance_plane_green's 1e-13.
+constexpr double kNodeTolerance = 1e-10;
 
 // Lagrange weights on the nodes 0, 1, …, order − 1 at t, with their first and second derivatives.
 struct Weights {
@@ -34,7 +37,7 @@ constexpr std::array<double, kMaxOrder> kDenominators4 = denominators(4), kDenom
 
 // Π_{n≠m}(t − n) as the product of the factors before m and those after, each carried with its
 // first and second derivatives (the product rule), then divided by Π_{n≠m}(m − n).
-Weights lagrange(double t, int order, int derivatives) {
+inline Weights lagrange(double t, int order, int derivatives) {
   struct Jet {
     double p = 1.0, d1 = 0.0, d2 = 0.0;
     void times(double f) {
@@ -112,17 +115,29 @@ ReflectedFieldTable::ReflectedFieldTable(double k, std::complex<double> admittan
     Complex* row = &values_[static_cast<std::size_t>(i) * static_cast<std::size_t>(npsi_)];
     for (int j = 0; j < below; ++j) {
       const double psi = psi0_ + j * hpsi_;
-      row[j] = impedance_plane_correction(k, radius * std::cos(psi), radius * std::sin(psi), admittance) / image;
+      row[j] = impedance_plane_correction(k, radius * std::cos(psi), radius * std::sin(psi), admittance, kNodeTolerance) / image;
     }
     // Past ψ = π/2 (r < 0) the mirror images, to the bit: C is even in r.
     for (int j = below; j < npsi_; ++j) row[j] = row[2 * below - 1 - j];
   }
-  // The region proper, for covers(): [xi_lo, xi_hi] × [psi_lo, π/2].
+  // The region proper, for covers(): [xi_lo, xi_hi] × [psi_lo, π/2], and the box inside it.
   xi0_region_ = xi_lo;
   psi0_region_ = psi_lo;
+  r_max_ = r_max;
+  z_min_ = z_min;
+  z_max_ = z_max;
+}
+
+std::size_t ReflectedFieldTable::estimated_nodes(double k, std::complex<double> admittance, double r_max, double z_min,
+                                                 double z_max, int order) {
+  const double h = spacing_for(k, admittance, r_max, z_max);
+  const double xi = std::log(std::hypot(r_max, z_max) / z_min), psi = 0.5 * std::numbers::pi - std::atan2(z_min, r_max);
+  return static_cast<std::size_t>((xi / h + order + 1) * (psi / h + order + 1));
 }
 
 bool ReflectedFieldTable::covers(double r, double z) const noexcept {
+  // The box first (no logarithms): it lies inside the log-polar region.
+  if (r >= 0.0 && r <= r_max_ && z >= z_min_ && z <= z_max_) return true;
   if (!(z > 0.0) || !(r >= 0.0)) return false;
   const double xi = 0.5 * std::log(r * r + z * z);
   const double psi = std::atan2(z, r);
@@ -130,28 +145,29 @@ bool ReflectedFieldTable::covers(double r, double z) const noexcept {
   return xi >= xi0_region_ - slack && xi <= xi_max_ + slack && psi >= psi0_region_ - slack && psi <= psi_max_ + slack;
 }
 
-ReflectedField ReflectedFieldTable::operator()(double r, double z, int derivatives) const {
+template <int P>
+ReflectedField ReflectedFieldTable::evaluate(double r, double z, int derivatives) const {
   const double r2sq = r * r + z * z;
   const double radius = std::sqrt(r2sq);
   const double xi = std::log(radius);
   const double psi = std::atan2(z, r);
   const auto stencil = [&](double u, int n, int& start) {
-    start = std::clamp(static_cast<int>(std::floor(u)) - (order_ / 2 - 1), 0, n - order_);
-    return lagrange(u - start, order_, derivatives);
+    start = std::clamp(static_cast<int>(std::floor(u)) - (P / 2 - 1), 0, n - P);
+    return lagrange(u - start, P, derivatives);
   };
   int i0 = 0, j0 = 0;
   const Weights a = stencil((xi - xi0_) / h_, nxi_, i0);
   const Weights b = stencil((psi - psi0_) / hpsi_, npsi_, j0);
   // F and its derivatives in (ξ, ψ).
   Complex f = 0.0, fx = 0.0, fp = 0.0, fxx = 0.0, fxp = 0.0, fpp = 0.0;
-  for (int m = 0; m < order_; ++m) {
+  for (int m = 0; m < P; ++m) {
     const Complex* row = &values_[static_cast<std::size_t>(i0 + m) * static_cast<std::size_t>(npsi_) + static_cast<std::size_t>(j0)];
     Complex v = 0.0, vp = 0.0, vpp = 0.0;
-    for (int n = 0; n < order_; ++n) v += b.w[static_cast<std::size_t>(n)] * row[n];
+    for (int n = 0; n < P; ++n) v += b.w[static_cast<std::size_t>(n)] * row[n];
     if (derivatives > 0)
-      for (int n = 0; n < order_; ++n) vp += b.d1[static_cast<std::size_t>(n)] * row[n];
+      for (int n = 0; n < P; ++n) vp += b.d1[static_cast<std::size_t>(n)] * row[n];
     if (derivatives > 1)
-      for (int n = 0; n < order_; ++n) vpp += b.d2[static_cast<std::size_t>(n)] * row[n];
+      for (int n = 0; n < P; ++n) vpp += b.d2[static_cast<std::size_t>(n)] * row[n];
     const auto p = static_cast<std::size_t>(m);
     f += a.w[p] * v;
     fx += a.d1[p] * v;
@@ -193,6 +209,10 @@ ReflectedField ReflectedFieldTable::operator()(double r, double z, int derivativ
   // itself it is ∂²C/∂r².
   out.dr_over_r = r > 0.0 ? out.dr / r : out.drr;
   return out;
+}
+
+ReflectedField ReflectedFieldTable::operator()(double r, double z, int derivatives) const {
+  return order_ == 4 ? evaluate<4>(r, z, derivatives) : evaluate<6>(r, z, derivatives);
 }
 
 }  // namespace rollnoise

@@ -50,16 +50,24 @@ class ReflectedFieldTable {
   ReflectedField operator()(double r, double z, int derivatives = 2) const;
 
   std::size_t nodes() const noexcept { return values_.size(); }
+  // About how many nodes (exact evaluations) a table of this region would take: a caller with
+  // fewer pairs than that evaluates them exactly instead.
+  static std::size_t estimated_nodes(double k, std::complex<double> admittance, double r_max, double z_min, double z_max,
+                                     int order = 6);
   // The spacing of the table's nodes that interpolates C to about 1e-5 of the image's field
   // e^{−ikR₂}/(4πR₂) (with order 6; 1.3e-5 at worst in the tests): finer near grazing incidence
   // when |β| is small and kR₂ large, where F turns on the angular scale max(|β|, 1/√(kR₂)).
   static double spacing_for(double k, std::complex<double> admittance, double r_max, double z_max);
 
  private:
+  template <int P>
+  ReflectedField evaluate(double r, double z, int derivatives) const;
+
   double k_;
   double xi0_ = 0.0, psi0_ = 0.0, h_, hpsi_ = 0.0;  // the first node and the spacings in ξ and ψ
   int nxi_ = 0, npsi_ = 0, order_;
   double xi0_region_ = 0.0, psi0_region_ = 0.0, xi_max_ = 0.0, psi_max_ = 0.0;  // the region covered
+  double r_max_ = 0.0, z_min_ = 0.0, z_max_ = 0.0;                              // and the box inside it
   std::vector<std::complex<double>> values_;  // F at (i, j): values_[i * npsi_ + j]
 };
 
