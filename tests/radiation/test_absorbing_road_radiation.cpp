@@ -19,6 +19,7 @@
 #include "road/air_properties.hpp"
 #include "road/layered_absorber.hpp"
 #include "cell_average.hpp"
+#include "coarse_radiation_settings.hpp"
 
 namespace rollnoise {
 namespace {
@@ -95,6 +96,28 @@ TEST(AbsorbingRoadRadiation, VanishingAdmittanceIsTheRigidRoad) {
     EXPECT_NEAR(w_tiny / w_rigid, 1.0, 1e-6) << f << " Hz";
     RecordProperty("rigid_limit_transfer_" + std::to_string(static_cast<int>(f)), std::to_string(transfer));
     RecordProperty("rigid_limit_power_" + std::to_string(static_cast<int>(f)), std::to_string(power));
+  }
+}
+
+// The radiation cache's key (TyreRadiation::anchor_key) holds the admittance: a porous run and
+// a rigid one never share an entry, nor two porous roads; an admittance of 0 is the rigid road
+// and keeps its key.
+TEST(AbsorbingRoadRadiation, CacheKeyHoldsTheAdmittance) {
+  TyreRadiationSettings settings = coarse_radiation_settings();
+  Eigen::Matrix3Xd receivers(3, 1);
+  receivers << 0.2, 0.3, 0.1;
+  const TyreRadiation rigid(settings, receivers);
+  settings.admittance = [](double) { return Complex(0.0); };
+  const TyreRadiation zero(settings, receivers);
+  settings.admittance = [](double hz) { return pa16_admittance(hz); };
+  const TyreRadiation porous(settings, receivers);
+  settings.admittance = [](double hz) { return 1.01 * pa16_admittance(hz); };
+  const TyreRadiation other(settings, receivers);
+  const Eigen::Index columns = rigid.mesh().tread_points;
+  for (const double f : {300.0, 500.0}) {
+    EXPECT_EQ(zero.anchor_key(0, f, columns), rigid.anchor_key(0, f, columns));
+    EXPECT_NE(porous.anchor_key(0, f, columns), rigid.anchor_key(0, f, columns));
+    EXPECT_NE(other.anchor_key(0, f, columns), porous.anchor_key(0, f, columns));
   }
 }
 
