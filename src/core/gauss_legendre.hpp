@@ -1,7 +1,7 @@
 #pragma once
-// Gauss–Legendre nodes and weights on [−1, 1] (Newton's method on P_n from the asymptotic
-// starting points cos(π(i − ¼)/(n + ½)): Abramowitz & Stegun 25.4.29 and 22.16.6): n nodes
-// integrate polynomials of degree 2n − 1 exactly.
+// Gauss–Legendre nodes and weights on [−1, 1]: Newton's method on P_n from the starting points
+// cos(π(i − ¼)/(n + ½)), weights 2/((1 − x²)P_n′(x)²) (as gauleg in Press et al., Numerical
+// Recipes, 3rd ed., §4.6). n nodes integrate polynomials of degree 2n − 1 exactly.
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
