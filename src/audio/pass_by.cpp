@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/real_fft_batch.hpp"
+
 namespace rollnoise {
 namespace {
 
@@ -40,6 +42,8 @@ void check(const Eigen::VectorXd& source, double sample_rate, const PassBySettin
     reject("settings.source_height", "non-negative and finite", s.source_height);
   if (!(s.ground_reflection >= 0.0) || !(s.ground_reflection <= 1.0))
     reject("settings.ground_reflection", "in [0, 1]", s.ground_reflection);
+  if (s.ground_reflection_factor && s.ground_reflection != 1.0)
+    reject("settings.ground_reflection", "1 with a ground_reflection_factor", s.ground_reflection);
   // 2^34 samples (4 days at 48 kHz) also keeps llround below in range.
   if (!(s.duration > 0.0) || !(s.duration * sample_rate <= 0x1p34))
     reject("settings.duration", "positive and at most 2^34 samples", s.duration);
@@ -93,6 +97,28 @@ double interpolate(const Eigen::VectorXd& x, double u) {
   return sum;
 }
 
+// The looped source filtered by Q: each bin m of its discrete Fourier transform (frequency
+// m·fs/N) times Q(m·fs/N), the circular convolution, exact for the periodic signal the pass-by
+// reads. FFTW's forward transform has e^{−iωt}, so a bin is the amplitude of e^{+iωt}, the
+// convention of Q. The mean (bin 0) is kept; Nyquist's bin of an even N must stay real.
+Eigen::VectorXd filtered_by(const Eigen::VectorXd& source, double sample_rate,
+                            const std::function<std::complex<double>(double)>& factor) {
+  const auto n = static_cast<int>(source.size());
+  RealFftBatch fft(n, 1);
+  for (int i = 0; i < n; ++i) fft.at(0, i) = source[i];
+  fft.forward();
+  for (int m = 1; m < fft.bins(); ++m) {
+    const std::complex<double> q = factor(m * sample_rate / n);
+    if (!std::isfinite(q.real()) || !std::isfinite(q.imag()))
+      throw std::invalid_argument("pass_by: settings.ground_reflection_factor must be finite");
+    fft.bin(0, m) *= (2 * m == n) ? std::complex<double>(q.real(), 0.0) : q;
+  }
+  fft.backward();
+  Eigen::VectorXd out(n);
+  for (int i = 0; i < n; ++i) out[i] = fft.at(0, i) / n;
+  return out;
+}
+
 }  // namespace
 
 Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
@@ -111,6 +137,11 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
   const double norm = 1.0 / (1.0 / r1_0 + reflection / r2_0);
   const std::array<Path, 2> paths{Path{r1_0 * r1_0, norm}, Path{r2_0 * r2_0, reflection * norm}};
   const int path_count = reflection > 0.0 ? 2 : 1;  // R = 0: the image adds nothing
+  // What each path reads: the source, or for the image over an absorbing road the source
+  // filtered by Q (made once, before the time loop).
+  const Eigen::VectorXd image_source =
+      settings.ground_reflection_factor ? filtered_by(source, sample_rate, settings.ground_reflection_factor) : Eigen::VectorXd();
+  const std::array<const Eigen::VectorXd*, 2> read{&source, settings.ground_reflection_factor ? &image_source : &source};
 
   // Emission time in closed form rather than by iteration: with τ = t − T/2 and the source at
   // x = V τ_e, t = t_e + r(t_e)/c squared is (c² − V²) τ_e² − 2c² τ τ_e + c² τ² − D² = 0, and
@@ -137,7 +168,7 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
       // Source sample position of the emission time: n − (r/c − r1_0/c) · fs, formed from the
       // integer n so that long outputs keep their sub-sample precision.
       const double u = static_cast<double>(n) - (lag - lag_0) * sample_rate;
-      p += path.gain * interpolate(source, u) / r;
+      p += path.gain * interpolate(*read[static_cast<std::size_t>(k)], u) / r;
     }
     out[n] = p;
   }

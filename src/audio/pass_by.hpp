@@ -8,8 +8,13 @@
 // (0, d, h_r) and the tyre at (V·(t − T/2), 0, h_s), so it is abeam at the middle of an output
 // T long. The tyre's noise is radiated from near the contact patch (the horn effect), so it is
 // one omnidirectional point source just above the road, plus its image in the road (height
-// −h_s) weighted by the pressure reflection coefficient R (1: a rigid, dense road; lower for
-// a porous one). Frequency-dependent road impedance is left out: R is one real number.
+// −h_s) weighted by the pressure reflection coefficient R (1: a rigid, dense road), one real
+// number; or, over an absorbing road, filtered by the spherical-wave reflection factor
+// Q(f) = 1 + C/E of the impedance plane at the closest approach (radiation/impedance_plane_green.hpp:
+// the exact field's correction C to the rigid image E = e^{−ikR₂}/(4πR₂), so that direct + Q·image
+// is the exact field there). The factor is that of the closest approach for the whole pass-by:
+// as the tyre moves away the incidence grows more grazing and the real factor changes; the
+// level at the closest approach, which the pass-by's maximum is, is exact.
 //
 // Each path is the field of a moving source, q(t_e)/r(t_e), taken at the emission time t_e
 // that satisfies t = t_e + r(t_e)/c. Reading the source at t_e gives the Doppler shift
@@ -23,6 +28,9 @@
 // back the input's level at low frequency: q = source / (1/r1_0 + R/r2_0) with r1_0, r2_0 the
 // two path lengths abeam. At higher frequencies the two paths interfere (the ground dip),
 // as they do at a real SPB microphone.
+#include <complex>
+#include <functional>
+
 #include <Eigen/Core>
 
 #include "core/cancellation.hpp"
@@ -37,6 +45,11 @@ struct PassBySettings {
   double duration = 5.0;           // s: length of the output; the closest approach is at its middle
   double sound_speed = 343.2;      // m/s
   double ground_reflection = 1.0;  // pressure reflection coefficient of the road, 0..1 (1: rigid)
+  // Over an absorbing road: Q at a frequency (Hz > 0), for time dependence e^{+iωt}, which
+  // filters the image path (above; the looped source, by its discrete Fourier transform) instead
+  // of ground_reflection, which must then be 1. Q → 1 at low frequency for a porous layer over
+  // a rigid base, so the normalisation below takes R = 1. Empty: the real R.
+  std::function<std::complex<double>(double)> ground_reflection_factor;
   CancellationToken cancel;        // polled every 65536 output samples (Interrupted)
 };
 
@@ -59,7 +72,8 @@ struct PassBySettings {
 // non-positive or non-finite sample rate, speed not in (0, 0.3 · sound_speed) (the limit keeps
 // the Doppler-compressed source well inside the interpolator's accurate band), a non-positive
 // receiver distance, negative heights, a non-positive duration or one shorter than a sample,
-// a non-positive sound speed, or a ground reflection outside [0, 1].
+// a non-positive sound speed, a ground reflection outside [0, 1], or a reflection factor with a
+// ground reflection other than 1 or giving a non-finite value.
 Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
                         const PassBySettings& settings);
 

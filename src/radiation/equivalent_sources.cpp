@@ -7,6 +7,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <cblas.h>
+
+#include "core/gauss_legendre.hpp"
+#include "radiation/half_space_green.hpp"
+
 namespace rollnoise {
 namespace {
 
@@ -62,6 +67,53 @@ struct SourceKernel {
     const double su = (ns[0] * dx + ns[1] * dy + ns[2] * dz) * inverse;
     const double nn = nx[0] * ns[0] + nx[1] * ns[1] + nx[2] * ns[2];
     return gp * inverse * (nn - nu * su) + gpp * (nu * su) - Complex(0.0, monopole) * gp * nu;
+  }
+};
+
+// The absorbing road's correction C(r, Z) to the image (half_space_green.hpp) as the field of
+// one source and the normal velocity it makes, r = |x_h − s_h|, Z = x_z + s_z, e = (x_h − s_h)/r
+// (0 at r = 0, where ∂C/∂r vanishes). Monopole: Ψ = C, velocity −n_x·∇_x C =
+// −C_r(n_x·e) − C_Z n_xz. Combined: Ψ = n_s·∇_s C + iη_k C = −C_r(n_s·e) + C_Z n_sz + iη_k C,
+// velocity −n_xᵀ(∇_x∇_sᵀC)n_s + iη_k·(the monopole's), with
+//   n_xᵀ(∇_x∇_sᵀC)n_s = −C_rr(n_x·e)(n_s·e) − (C_r/r)(n_xh·n_sh − (n_x·e)(n_s·e))
+//                        + C_rZ[(n_x·e)n_sz − n_xz(n_s·e)] + C_ZZ n_xz n_sz.
+struct ReflectionKernel {
+  const HalfSpaceGreen* green = nullptr;  // null: the rigid road (no correction)
+  double monopole = 0.0;  // η_k
+  bool combined = false;
+
+  struct Pair {
+    ReflectedField c;
+    double ex = 0.0, ey = 0.0;
+  };
+  Pair pair(const double* x, const double* s, int derivatives) const {
+    const double dx = x[0] - s[0], dy = x[1] - s[1];
+    const double r = std::sqrt(dx * dx + dy * dy);
+    Pair p{green->correction(r, x[2] + s[2], derivatives)};
+    if (r > 0.0) {
+      p.ex = dx / r;
+      p.ey = dy / r;
+    }
+    return p;
+  }
+
+  Complex field(const double* x, const double* s, const double* ns) const {
+    const Pair p = pair(x, s, combined ? 1 : 0);
+    if (!combined) return p.c.value;
+    const double se = ns[0] * p.ex + ns[1] * p.ey;
+    return -p.c.dr * se + p.c.dz * ns[2] + Complex(0.0, monopole) * p.c.value;
+  }
+
+  Complex velocity(const double* x, const double* nx, const double* s, const double* ns) const {
+    const Pair p = pair(x, s, combined ? 2 : 1);
+    const double xe = nx[0] * p.ex + nx[1] * p.ey;
+    const Complex single = -p.c.dr * xe - p.c.dz * nx[2];
+    if (!combined) return single;
+    const double se = ns[0] * p.ex + ns[1] * p.ey;
+    const double horizontal = nx[0] * ns[0] + nx[1] * ns[1];
+    const Complex mixed = -p.c.drr * (xe * se) - p.c.dr_over_r * (horizontal - xe * se) +
+                          p.c.drz * (xe * ns[2] - nx[2] * se) + p.c.dzz * (nx[2] * ns[2]);
+    return -mixed + Complex(0.0, monopole) * single;
   }
 };
 
@@ -239,6 +291,11 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<
     n.col(i) = normals_.col(rows[static_cast<std::size_t>(i)]);
   }
   const SourceKernel kernel{k, coupling_ * k + coupling_floor_, coupling_ > 0.0};
+  // Over an absorbing road, the correction to the image from a table over these pairs.
+  const Complex beta = plane_admittance(k * medium_.sound_speed);
+  std::optional<HalfSpaceGreen> road;
+  if (beta != 0.0 && count > 0) road.emplace(k, beta, reflection_region(x, sources_));
+  const ReflectionKernel reflection{road ? &*road : nullptr, kernel.monopole, kernel.combined};
   for (Eigen::Index j = 0; j < sources_.cols(); ++j) {
     const Eigen::Vector3d s = sources_.col(j), ns = source_normals_.col(j);
     const Eigen::Vector3d image = mirrored(s), image_normal = mirrored(ns);
@@ -246,6 +303,7 @@ Eigen::MatrixXcd EquivalentSources::velocity_matrix(double k, const std::vector<
     for (Eigen::Index i = 0; i < count; ++i) {
       Complex value = kernel.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
       if (rigid_plane_) value += kernel.velocity(x.col(i).data(), n.col(i).data(), image.data(), image_normal.data());
+      if (reflection.green) value += reflection.velocity(x.col(i).data(), n.col(i).data(), s.data(), ns.data());
       column[i] = row_scale_.size() ? row_scale_(rows[static_cast<std::size_t>(i)]) * value : value;
     }
   }
@@ -267,7 +325,40 @@ Eigen::MatrixXcd EquivalentSources::pressure_matrix(double omega, const Eigen::M
       p(r, j) = factor * value;
     }
   }
+  const Complex beta = plane_admittance(omega);
+  if (beta == 0.0 || at.cols() == 0) return p;
+  // The absorbing road's correction. A few receivers far apart (the CPX and pass-by
+  // microphones) each get a table over their own pairs, which is small where they are far and
+  // cheaper than the exact function for every source; many points (the surface) share one.
+  const auto add = [&](const Eigen::Matrix3Xd& points, Eigen::Index first) {
+    // The exact function for few pairs (1 evaluation each for monopoles, 5 for combined sources'
+    // first derivatives), a table when that is cheaper.
+    const auto evaluations = static_cast<std::size_t>(points.cols() * sources_.cols() * (kernel.combined ? 5 : 1));
+    const HalfSpaceGreen road(k, beta, reflection_region(points, sources_), evaluations);
+    const ReflectionKernel reflection{&road, kernel.monopole, kernel.combined};
+    for (Eigen::Index j = 0; j < sources_.cols(); ++j)
+      for (Eigen::Index r = 0; r < points.cols(); ++r)
+        p(first + r, j) += factor * reflection.field(points.col(r).data(), sources_.col(j).data(), source_normals_.col(j).data());
+  };
+  constexpr Eigen::Index kShared = 8;
+  if (at.cols() > kShared)
+    add(at, 0);
+  else
+    for (Eigen::Index r = 0; r < at.cols(); ++r) add(at.col(r), r);
   return p;
+}
+
+void EquivalentSources::set_plane_admittance(PlaneAdmittance admittance) {
+  if (admittance && !rigid_plane_) throw std::invalid_argument("equivalent sources: an admittance needs the plane z = 0");
+  admittance_ = std::move(admittance);
+}
+
+std::complex<double> EquivalentSources::plane_admittance(double omega) const {
+  if (!admittance_) return 0.0;
+  const Complex beta = admittance_(omega / (2.0 * std::numbers::pi));
+  if (!std::isfinite(beta.real()) || !std::isfinite(beta.imag()) || beta.real() < 0.0)
+    throw std::invalid_argument("equivalent sources: the road's admittance must be finite with Re β >= 0 (a passive road)");
+  return beta;
 }
 
 EquivalentSourceSolve::EquivalentSourceSolve(const Eigen::MatrixXcd& velocity_matrix, double lambda)
@@ -444,6 +535,8 @@ Complex EquivalentSources::power_entry(Eigen::Index i, Eigen::Index j, double k)
 }
 
 Eigen::MatrixXcd EquivalentSources::power_matrix(double omega) const {
+  // Over an absorbing road: the one block of the unsplit quadrature, S itself.
+  if (const Complex beta = plane_admittance(omega); beta != 0.0) return std::move(far_field_power_blocks(omega, beta, false).front());
   const double k = omega / medium_.sound_speed;
   const double scale = omega * medium_.density * k * k * k / (4.0 * std::numbers::pi);
   const Eigen::Index n = sources_.cols();
@@ -460,6 +553,7 @@ Eigen::MatrixXcd EquivalentSources::power_matrix(double omega) const {
 // S_c(a, b) = √(|O_a|/|O_b|) Σ_{y ∈ O_b} χ_c(g_y) S(r_a, y): the rows at the orbits'
 // representatives only.
 std::vector<Eigen::MatrixXcd> EquivalentSources::power_blocks(double omega) const {
+  if (const Complex beta = plane_admittance(omega); beta != 0.0) return far_field_power_blocks(omega, beta, true);
   const double k = omega / medium_.sound_speed;
   const double scale = omega * medium_.density * k * k * k / (4.0 * std::numbers::pi);
   const SymmetryBasis& basis = *source_basis_;
@@ -505,6 +599,158 @@ Eigen::VectorXd EquivalentSources::radiated_power(double omega, const Eigen::Mat
     for (Eigen::Index col = 0; col < strengths.cols(); ++col) power(col) += 0.5 * q.col(col).dot(sq.col(col)).real();
   }
   return power;
+}
+
+// The power over an absorbing road. Far from the sources the field of source y in the
+// direction x̂ (polar angle θ from the vertical, azimuth φ) is, per iωρ·e^{−ik|x|}/(4π|x|),
+//   f_y(x̂) = ik[a_y(x̂)e^{ik x̂·s_y} + R_p(θ)·a_y′(x̂)e^{ik x̂·s_y′}],
+// the direct wave and the plane wave that left the source downwards and reflected off the road
+// with R_p = (cos θ − β)/(cos θ + β): the image s′ with the mirrored normal n′, a = 1/(ik) for a
+// monopole and a = n·x̂ + η for a combined source. The exact field differs from this by terms
+// that fall faster than 1/|x| (the surface wave, attenuated as Re β > 0, and the ground wave,
+// which cancels the reflection at grazing incidence), so the power crossing a far hemisphere is
+//   W = ½qᴴSq,  S_ij = (ωρk/16π²)·∫_{hemisphere} f_i* f_j dΩ,
+// which for β = 0 is the closed form of the rigid plane (power_entry). It is the power that
+// leaves through the air; what the road absorbs is not in it.
+//
+// Split by symmetry: R_p depends on θ only, so a mirror of the sources is a mirror of the
+// directions, and the symmetrised patterns φ_b = Σ_{y ∈ O_b} χ_c(g_y) f_y/√|O_b| of one
+// character make a product φ_a*φ_b invariant under the group: S_c(a, b) = W_cᵀSW_c is |G|
+// times the integral over the fundamental domain of the azimuth (y ≥ 0 for the mirror y → −y,
+// x ≥ 0 for x → −x).
+//
+// Quadrature: Gauss–Legendre in θ and φ, sin θ dθ dφ. The phase k x̂·(s_j − s_i) turns at most
+// at kD per radian (D: the diameter of the sources with their images; in φ, kD_h with D_h their
+// horizontal diameter), and Gauss–Legendre integrates e^{iαt} on [−1, 1] to rounding from about
+// eα/4 ≈ 0.7α nodes: 0.7·kD·L/2 + 12 per panel of length L. R_p has its pole at cos θ = −β, a
+// distance of about |β| below the horizon, so the last b = 4|β| (0.02 … 0.5 rad) of θ is a panel
+// of its own. Checked against a quadrature twice as fine and against the rigid closed form
+// (tests/radiation/test_half_space_green.cpp, test_sound_power_far_field.cpp).
+std::vector<Eigen::MatrixXcd> EquivalentSources::far_field_power_blocks(double omega, std::complex<double> admittance,
+                                                                        bool split) const {
+  const double k = omega / medium_.sound_speed;
+  const Eigen::Index n = sources_.cols();
+  const bool combined = coupling_ > 0.0;
+  const double eta = coupling_ + coupling_floor_ / k;
+  // The group: which mirrors (SymmetryBasis's generators: y → −y first when the model has it).
+  const SymmetryBasis* basis = split ? source_basis_.get() : nullptr;
+  bool mirror_x = false, mirror_y = false;
+  if (basis) {
+    mirror_y = mirror_y_;
+    mirror_x = basis->generators() == 2 || !mirror_y_;
+  }
+  const int order = basis ? basis->characters() : 1;
+  const double pi = std::numbers::pi;
+  const double phi_lo = mirror_y ? 0.0 : (mirror_x ? -0.5 * pi : 0.0);
+  const double phi_hi = mirror_y ? (mirror_x ? 0.5 * pi : pi) : (mirror_x ? 0.5 * pi : 2.0 * pi);
+  // Diameters of the sources with their images.
+  const Eigen::Vector3d lo = sources_.rowwise().minCoeff(), hi = sources_.rowwise().maxCoeff();
+  const double horizontal = std::hypot(hi.x() - lo.x(), hi.y() - lo.y());
+  const double diameter = std::hypot(horizontal, 2.0 * hi.z());
+  const auto nodes = [&](double extent, double length) { return static_cast<int>(std::ceil(0.35 * k * extent * length)) + 12; };
+  const double edge = std::clamp(4.0 * std::abs(admittance), 0.02, 0.5);
+  std::vector<double> theta, theta_weight;
+  const auto add_panel = [](std::vector<double>& x, std::vector<double>& w, double a, double b, int count) {
+    const GaussRule rule = gauss_legendre_rule(count);
+    for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+      x.push_back(0.5 * (a + b) + 0.5 * (b - a) * rule.nodes[q]);
+      w.push_back(0.5 * (b - a) * rule.weights[q]);
+    }
+  };
+  add_panel(theta, theta_weight, 0.0, 0.5 * pi - edge, nodes(diameter, 0.5 * pi - edge));
+  add_panel(theta, theta_weight, 0.5 * pi - edge, 0.5 * pi, nodes(diameter, edge) + 4);
+  // Each ring of θ its own azimuths: the phase turns at k·sin θ·D_h per radian of φ.
+  struct Direction {
+    std::size_t ring;
+    double x, y, weight;
+  };
+  std::vector<Direction> directions;
+  for (std::size_t t = 0; t < theta.size(); ++t) {
+    std::vector<double> phi, phi_weight;
+    const double st = std::sin(theta[t]);
+    add_panel(phi, phi_weight, phi_lo, phi_hi, nodes(horizontal * st, phi_hi - phi_lo));
+    for (std::size_t a = 0; a < phi.size(); ++a)
+      directions.push_back({t, st * std::cos(phi[a]), st * std::sin(phi[a]), std::sqrt(theta_weight[t] * st * phi_weight[a])});
+  }
+  const auto count = static_cast<Eigen::Index>(directions.size());
+  // The blocks' orbits (unsplit: every source its own orbit of the trivial group).
+  std::vector<std::vector<Eigen::Index>> block_orbits;
+  if (basis)
+    for (int c = 0; c < order; ++c) block_orbits.push_back(basis->block(c));
+  else {
+    block_orbits.emplace_back(static_cast<std::size_t>(n));
+    std::iota(block_orbits.front().begin(), block_orbits.front().end(), Eigen::Index{0});
+  }
+  std::vector<Eigen::MatrixXcd> out;
+  for (const auto& orbits : block_orbits) {
+    const auto size = static_cast<Eigen::Index>(orbits.size());
+    out.push_back(Eigen::MatrixXcd::Zero(size, size));
+  }
+  // Chunks of directions: f for every source there, the blocks' symmetrised patterns, and
+  // S_c += F_cᴴF_c (zherk, lower triangle). e^{ik cos θ·s_z} once per ring.
+  constexpr Eigen::Index kChunk = 256;
+  const Complex ik(0.0, k);
+  Eigen::MatrixXcd f(kChunk, n);
+  std::vector<Eigen::MatrixXcd> patterns(out.size());
+  std::vector<Complex> up(static_cast<std::size_t>(n));
+  std::size_t ring = theta.size();  // none yet
+  for (Eigen::Index first = 0; first < count; first += kChunk) {
+    const Eigen::Index rows = std::min(kChunk, count - first);
+    for (Eigen::Index d = 0; d < rows; ++d) {
+      const Direction& direction = directions[static_cast<std::size_t>(first + d)];
+      const double ct = std::cos(theta[direction.ring]);
+      if (direction.ring != ring) {
+        ring = direction.ring;
+        for (Eigen::Index j = 0; j < n; ++j) up[static_cast<std::size_t>(j)] = std::polar(1.0, k * ct * sources_(2, j));
+      }
+      const Complex reflection = (ct - admittance) / (ct + admittance);
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const double* s = sources_.col(j).data();
+        const Complex horizontal_phase = std::polar(direction.weight, k * (direction.x * s[0] + direction.y * s[1]));
+        const Complex u = up[static_cast<std::size_t>(j)];
+        const Complex direct = horizontal_phase * u, image = horizontal_phase * std::conj(u);
+        if (!combined) {
+          f(d, j) = direct + reflection * image;
+        } else {
+          const double* ns = source_normals_.col(j).data();
+          const double across = direction.x * ns[0] + direction.y * ns[1];
+          f(d, j) = ik * ((across + ct * ns[2] + eta) * direct + reflection * (across - ct * ns[2] + eta) * image);
+        }
+      }
+    }
+    for (std::size_t c = 0; c < out.size(); ++c) {
+      const std::vector<Eigen::Index>& orbits = block_orbits[c];
+      Eigen::MatrixXcd& pattern = patterns[c];
+      pattern.resize(rows, static_cast<Eigen::Index>(orbits.size()));
+      for (std::size_t b = 0; b < orbits.size(); ++b) {
+        auto column = pattern.col(static_cast<Eigen::Index>(b));
+        if (!basis) {
+          column = f.col(orbits[b]).head(rows);
+          continue;
+        }
+        const SymmetryBasis::Orbit& orbit = basis->orbits()[static_cast<std::size_t>(orbits[b])];
+        column.setZero();
+        for (const SymmetryBasis::Member& m : orbit.members)
+          column += SymmetryBasis::character(static_cast<int>(c), m.element) * f.col(m.point).head(rows);
+        column /= std::sqrt(static_cast<double>(orbit.members.size()));
+      }
+      if (pattern.cols() == 0) continue;
+      cblas_zherk(CblasColMajor, CblasLower, CblasConjTrans, static_cast<int>(pattern.cols()), static_cast<int>(rows), 1.0,
+                  pattern.data(), static_cast<int>(rows), 1.0, out[c].data(), static_cast<int>(out[c].rows()));
+    }
+  }
+  // Monopoles: f was e + R_p·e′ for ik·a = 1; combined: ik·(a e + R_p a′ e′). Scale ωρk/16π²
+  // and |G| for the fundamental domain; fill the upper triangle.
+  const double scale = omega * medium_.density * k / (16.0 * pi * pi) * order;
+  for (Eigen::MatrixXcd& block : out) {
+    for (Eigen::Index j = 0; j < block.cols(); ++j)
+      for (Eigen::Index i = j; i < block.rows(); ++i) {
+        block(i, j) *= scale;
+        if (i == j) block(i, j) = block(i, j).real();
+        else block(j, i) = std::conj(block(i, j));
+      }
+  }
+  return out;
 }
 
 Eigen::MatrixXcd pivoted_cholesky(const Eigen::MatrixXcd& s, double tolerance) {

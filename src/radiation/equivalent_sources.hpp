@@ -10,6 +10,7 @@
 //   p(x) = iωρ·q·G(x, s),   G = e^{−ikr}/(4πr) (+ the image term),   k = ω/c,
 // and by Euler's equation iωρ·v = −∇p the normal velocity v_n = −q·∂G/∂n.
 #include <complex>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -26,6 +27,11 @@ struct Medium {
   double density = 1.204;        // ρ, kg/m³ (air at 20 °C)
   double sound_speed = 343.2;    // c, m/s
 };
+
+// The road's normalised surface admittance β = ρ₀c₀/Z_s at a frequency (Hz), Re β ≥ 0
+// (road/road_absorption.hpp computes it; the radiation takes it as a plain function so that it
+// does not depend on the road library). β = 0: the rigid road.
+using PlaneAdmittance = std::function<std::complex<double>(double frequency_hz)>;
 
 // The free-field Green's function and its image in the rigid plane z = 0.
 std::complex<double> helmholtz_green(const Eigen::Vector3d& x, const Eigen::Vector3d& s, double k, bool rigid_plane);
@@ -204,6 +210,15 @@ class EquivalentSources {
   bool mirror_symmetric() const noexcept { return mirror_y_; }
   // The number of blocks solve() splits the problem into: 1, 2 (one mirror) or 4 (both).
   int symmetry_blocks() const noexcept { return point_basis_ ? point_basis_->characters() : 1; }
+  // The plane z = 0 as an absorbing road (needs rigid_plane): at each ω the sources' field is
+  // that of the half-space over the impedance plane of admittance β(ω/2π)
+  // (half_space_green.hpp): the velocity matrix, the pressures and the power all use it. Where
+  // β is 0 everything is exactly the rigid plane's. The power over an absorbing road is the
+  // far-field intensity, with the plane-wave reflection coefficient, integrated over the
+  // hemisphere (power_matrix); what the road absorbs is not radiated. An empty function: rigid.
+  void set_plane_admittance(PlaneAdmittance admittance);
+  // β at ω (0 when rigid or no admittance is set).
+  std::complex<double> plane_admittance(double omega) const;
   // How solve() solves the least-squares problems (least_squares.hpp; default automatic).
   void set_least_squares_method(LeastSquaresMethod method) noexcept { method_ = method; }
   // Weights of the collocation points in the least squares, min Σ w_m |(Vq − v)_m|² (default:
@@ -220,6 +235,9 @@ class EquivalentSources {
   std::complex<double> power_entry(Eigen::Index i, Eigen::Index j, double k) const;
   // S_c per character of the source basis (split only).
   std::vector<Eigen::MatrixXcd> power_blocks(double omega) const;
+  // Over an absorbing road (β ≠ 0): S_c per character of the source basis when `split`, else
+  // S alone, by quadrature of the far field over the hemisphere.
+  std::vector<Eigen::MatrixXcd> far_field_power_blocks(double omega, std::complex<double> admittance, bool split) const;
   // Per character, the positions in its block of the point basis whose orbits lie in the first
   // `columns` points (split only; std::invalid_argument when an orbit straddles `columns`).
   std::vector<std::vector<Eigen::Index>> leading_coordinates(Eigen::Index columns) const;
@@ -234,6 +252,7 @@ class EquivalentSources {
   bool mirror_y_ = false;
   LeastSquaresMethod method_ = LeastSquaresMethod::automatic;
   Eigen::VectorXd row_scale_;  // √w (empty: unweighted)
+  PlaneAdmittance admittance_;  // empty: the rigid plane
 };
 
 }  // namespace rollnoise

@@ -28,6 +28,21 @@ std::complex<double> impedance_plane_green(double k, double r, double z_receiver
   const Complex image = std::exp(-i * k * r2) / (four_pi * r2);
   if (admittance == 0.0) return direct + image;
   if (infinite) return direct - image;
+  return direct + image + impedance_plane_correction(k, r, height, admittance);
+}
+
+std::complex<double> impedance_plane_correction(double k, double r, double height, std::complex<double> admittance,
+                                                double relative_tolerance) {
+  using Complex = std::complex<double>;
+  const Complex i(0.0, 1.0);
+  const double r2 = std::hypot(r, height);
+  const bool infinite = std::isinf(admittance.real()) || std::isinf(admittance.imag());
+  if (!(k > 0.0) || !std::isfinite(k) || !(r >= 0.0) || !std::isfinite(r) || !(height > 0.0) || !std::isfinite(height) ||
+      !(relative_tolerance > 0.0) || std::isnan(admittance.real()) || std::isnan(admittance.imag()) ||
+      (!infinite && admittance.real() < 0.0))
+    throw std::invalid_argument("impedance_plane_correction: k > 0, r >= 0, Z > 0, a positive tolerance and Re β >= 0 needed");
+  if (admittance == 0.0) return 0.0;
+  if (infinite) return -2.0 * std::exp(-i * k * r2) / (4.0 * std::numbers::pi * r2);
   // The line integral in t = ks: ∫₀^∞ e^{−βt} e^{−ikR}/(kR) dt.
   const Complex beta = admittance;
   const auto line = [&](double t) {
@@ -45,9 +60,9 @@ std::complex<double> impedance_plane_green(double k, double r, double z_receiver
                breaks.end());
   std::sort(breaks.begin(), breaks.end());
   // The correction is −(kβ/2π)·∫: an error ε in ∫ is kβε/(2π) against the image's 1/(4πR₂).
-  const double tolerance = 1e-13 / (kr2 * std::max(1.0, std::abs(beta)));
+  const double tolerance = relative_tolerance / (kr2 * std::max(1.0, std::abs(beta)));
   const Complex integral = integrate_gauss_kronrod(line, breaks, tolerance);
-  return direct + image - k * beta / (2.0 * std::numbers::pi) * integral;
+  return -k * beta / (2.0 * std::numbers::pi) * integral;
 }
 
 }  // namespace rollnoise

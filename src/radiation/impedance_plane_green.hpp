@@ -30,4 +30,12 @@ namespace rollnoise {
 std::complex<double> impedance_plane_green(double k, double r, double z_receiver, double z_source,
                                            std::complex<double> admittance);
 
+// The absorbing road's correction alone, G − direct − image = −(kβ/2π)∫₀^∞ e^{−βt}e^{−ikR}/(kR) dt
+// (t = ks), which depends on the heights only through their sum Z = z_receiver + z_source (> 0):
+// what reflected_field_table.hpp tabulates. Zero for β = 0; −2·image for β = ∞. The line
+// integral to `tolerance` relative to the image's field (1e-13: to rounding, as
+// impedance_plane_green; the table's nodes take 1e-10, far below its interpolation's 1e-5).
+std::complex<double> impedance_plane_correction(double k, double r, double height, std::complex<double> admittance,
+                                                double tolerance = 1e-13);
+
 }  // namespace rollnoise

@@ -131,11 +131,14 @@ std::size_t radiation_thread_limit(const TyreRadiationSettings& settings) {
                               : std::max<std::size_t>(1, std::thread::hardware_concurrency());
 }
 
-EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium, bool combined) {
+EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium, bool combined,
+                                  PlaneAdmittance admittance) {
   std::optional<CombinedSources> layer;
   if (combined) layer = CombinedSources{mesh.source_normals, 1.0, kCouplingFloor};
-  return EquivalentSources(mesh.sources, mesh.points, mesh.normals, true, medium, EquivalentSources::Symmetry::automatic,
-                           std::move(layer));
+  EquivalentSources model(mesh.sources, mesh.points, mesh.normals, true, medium, EquivalentSources::Symmetry::automatic,
+                          std::move(layer));
+  model.set_plane_admittance(std::move(admittance));
+  return model;
 }
 
 std::vector<RadiationMeshLevel> radiation_mesh_levels(const TyreRadiationSettings& settings) {
@@ -175,8 +178,8 @@ TyreRadiation::TyreRadiation(const TyreRadiationSettings& settings, Eigen::Matri
   if (receivers_.cols() == 0) throw std::invalid_argument("tyre radiation: no receivers");
   for (const RadiationMeshLevel& level : radiation_mesh_levels(settings_)) {
     TyreSurfaceMesh mesh = make_tyre_surface_mesh(level.spec);
-    EquivalentSources monopoles = make_tyre_model(mesh, settings_.medium, false);
-    EquivalentSources combined = make_tyre_model(mesh, settings_.medium, true);
+    EquivalentSources monopoles = make_tyre_model(mesh, settings_.medium, false, settings_.admittance);
+    EquivalentSources combined = make_tyre_model(mesh, settings_.medium, true, settings_.admittance);
     // The geometry the solve sees, to the bit: whatever in the spec, the deformation or the
     // band's rule shaped the mesh acts through these (and the areas, which the solve does not use,
     // are left out).
@@ -229,6 +232,17 @@ std::string TyreRadiation::anchor_key(std::size_t level, double anchor_hz, Eigen
   // make_tyre_model's choices: the rigid road, the automatic symmetry split, the automatic
   // least-squares method and unweighted collocation.
   d.text("rigid plane; symmetry automatic; least squares automatic; unweighted");
+  // Over an absorbing road, its admittance at the anchor (a rigid road's entries keep their
+  // keys: its operators are the same to the bit). The table's and the power quadrature's
+  // resolutions follow from it and the geometry, so it is all they need.
+  if (settings_.admittance) {
+    const std::complex<double> beta = settings_.admittance(anchor_hz);
+    if (beta != 0.0) {
+      d.text("impedance plane; reflected-field table and hemisphere power, revision 1");
+      d.real(beta.real());
+      d.real(beta.imag());
+    }
+  }
   return kRadiationCachePrefix + d.hex();
 }
 

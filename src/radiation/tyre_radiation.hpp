@@ -61,10 +61,11 @@ namespace rollnoise {
 
 class ProgressReporter;
 
-// The equivalent-source model of a tyre mesh over the rigid road, as the radiation stage solves
-// it, split by the mesh's mirror symmetries: monopoles, or combined sources
-// (equivalent_sources.hpp) with η = 1 and η₀ = 50 /m.
-EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium = {}, bool combined = false);
+// The equivalent-source model of a tyre mesh over the road, as the radiation stage solves it,
+// split by the mesh's mirror symmetries: monopoles, or combined sources (equivalent_sources.hpp)
+// with η = 1 and η₀ = 50 /m; over an absorbing road when `admittance` is given.
+EquivalentSources make_tyre_model(const TyreSurfaceMesh& mesh, const Medium& medium = {}, bool combined = false,
+                                  PlaneAdmittance admittance = {});
 
 // Which sources the stage uses. Monopoles up to 3 kHz, as before issue 10 §3, so the runs'
 // levels there are what they were; combined sources above, where the monopoles' interior
@@ -85,6 +86,9 @@ struct TyreRadiationSettings {
   double anchor_spacing_hz = 100.0;   // anchors at 20, 50, then every spacing up to the maximum
   double regularisation = 1e-10;      // Tikhonov λ relative to the largest singular value
   int threads = 0;                    // parallel anchor solves; 0: the machine's cores
+  // The road's normalised admittance per frequency (equivalent_sources.hpp); empty, or 0 at an
+  // anchor: the rigid road there. The cache keys on its value at each anchor.
+  PlaneAdmittance admittance;
 };
 
 // The most threads the anchors are solved on: `threads`, or the machine's cores when it is 0.

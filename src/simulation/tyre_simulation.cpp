@@ -366,6 +366,12 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
         belt_budget_weights(grid.circumferential, grid.lateral, grid.circumference()));
   }
   sound.radiation.sample_rate_hz = 1.0 / dt;
+  // Over a porous road ([road.absorption]) the radiation's plane is its impedance plane: the
+  // admittance at each anchor, as a plain function (the radiation does not link the road).
+  if (!road->absorption().rigid())
+    sound.radiation.admittance = [absorption = road->absorption()](double frequency) {
+      return absorption.normalised_admittance(frequency);
+    };
   sound.cache_folder = options.cache;
   sound.progress_sink = options.progress_sink;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -21,6 +22,7 @@
 #include "core/byte_size.hpp"
 #include "core/gnuplot.hpp"
 #include "core/progress.hpp"
+#include "radiation/impedance_plane_green.hpp"
 #include "radiation/monopole_radiation.hpp"
 #include "radiation/radiation_cache.hpp"
 #include "simulation/energy_budget_output.hpp"
@@ -227,6 +229,16 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
     passing.receiver_height = spb->position.z();
     passing.duration = settings.wav_duration;
     passing.sound_speed = settings.radiation.medium.sound_speed;
+    // Over an absorbing road the image path carries the impedance plane's reflection at the
+    // closest approach (pass_by.hpp), from the exact field.
+    if (settings.radiation.admittance)
+      passing.ground_reflection_factor = [admittance = settings.radiation.admittance, passing](double frequency) {
+        const double k = 2.0 * std::numbers::pi * frequency / passing.sound_speed;
+        const double height = passing.receiver_height + passing.source_height;
+        const double r2 = std::hypot(passing.receiver_distance, height);
+        const std::complex<double> image = std::polar(1.0 / (4.0 * std::numbers::pi * r2), -k * r2);
+        return 1.0 + impedance_plane_correction(k, passing.receiver_distance, height, admittance(frequency)) / image;
+      };
     const ReceiverSignal& stationary = signals[static_cast<std::size_t>(spb - settings.receivers.begin())];
     signals.push_back({"spb_passby", pass_by(make_loopable(stationary.pressure, settings.audio_rate), settings.audio_rate, passing),
                        settings.audio_rate, highest_band});
@@ -319,6 +331,9 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
                          // The threads the anchors were solved on, at most ([radiation] threads, or
                          // what the study gave this case, else one per core).
                          {"threads", radiation_thread_limit(settings.radiation)},
+                         // The plane the sources see: the rigid road, or the impedance plane of
+                         // the road's [road.absorption] (docs/physics/absorbing-roads.md).
+                         {"road", settings.radiation.admittance ? "impedance plane" : "rigid"},
                          {"time_s", radiation_seconds}};
   if (air) result["air_pumping"] = air_pumping_summary(*air_pumping, *air, vibration, highest_band);
   stages.lap("sound_summary");

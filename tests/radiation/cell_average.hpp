@@ -14,10 +14,12 @@ namespace rollnoise {
 // n·∇G at collocation point m for a source at `s`: on the tread the area-weighted mean over the
 // point's cell on the (deformed or undeformed) surface (sub-sampled finer where the source is
 // close), on the sidewalls the point value.
+// `gradient(x)`: ∇_x G of the source's field (default: the free field and its image in the rigid road).
+template <class Gradient>
 inline std::complex<double> normal_gradient(const TyreSurfaceShape& shape, const TyreSurfaceMesh& mesh, Eigen::Index m,
-                        const Eigen::Vector3d& s, double k) {
+                                            const Eigen::Vector3d& s, const Gradient& gradient) {
   const Eigen::Vector3cd normal = mesh.normals.col(m).cast<std::complex<double>>();
-  if (m >= mesh.tread_points) return normal.dot(helmholtz_green_gradient(mesh.points.col(m), s, k, true));
+  if (m >= mesh.tread_points) return normal.dot(gradient(Eigen::Vector3d(mesh.points.col(m))));
   const auto a = static_cast<std::size_t>(m % mesh.tread_around);
   const auto b = static_cast<std::size_t>(m / mesh.tread_around);
   const double psi0 = mesh.tread_angle_edges[a], psi1 = mesh.tread_angle_edges[a + 1];
@@ -32,10 +34,15 @@ inline std::complex<double> normal_gradient(const TyreSurfaceShape& shape, const
     for (int j = 0; j < nb; ++j) {
       const double psi = psi0 + (i + 0.5) * (psi1 - psi0) / na, y = y0 + (j + 0.5) * (y1 - y0) / nb;
       const double w = shape.area_element(psi, y);
-      sum += w * shape.normal(psi, y).cast<std::complex<double>>().dot(helmholtz_green_gradient(shape.position(psi, y), s, k, true));
+      sum += w * shape.normal(psi, y).cast<std::complex<double>>().dot(gradient(shape.position(psi, y)));
       weight += w;
     }
   return sum / weight;
+}
+
+inline std::complex<double> normal_gradient(const TyreSurfaceShape& shape, const TyreSurfaceMesh& mesh, Eigen::Index m,
+                                            const Eigen::Vector3d& s, double k) {
+  return normal_gradient(shape, mesh, m, s, [&](const Eigen::Vector3d& x) { return helmholtz_green_gradient(x, s, k, true); });
 }
 
 }  // namespace rollnoise
