@@ -29,8 +29,8 @@ extra=()
 read -r -a settings <<< "${VALIDATION_SET:-}"
 for s in "${settings[@]}"; do extra+=(--set "$s"); done
 # VALIDATION_SURFACES="dac11 sma11 ..." runs a subset at 80 km/h, VALIDATION_SURFACES_50 at 50 km/h.
-read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 thin6 chipseal iso10844 eacc tined captif_fine}"
-read -r -a surfaces_50 <<< "${VALIDATION_SURFACES_50:-dac11 sma11 captif_fine}"
+read -r -a surfaces <<< "${VALIDATION_SURFACES:-dac11 sma11 sma8 pa16 pa2l thin6 chipseal iso10844 eacc tined captif_fine}"
+read -r -a surfaces_50 <<< "${VALIDATION_SURFACES_50:-dac11 sma11 pa16 pa2l captif_fine}"
 
 run() {  # surface speed_kmh
   local dir="$out/$1_$2kmh"
