@@ -36,6 +36,7 @@
 #include "radiation/tyre_surface_mesh.hpp"
 #include "response/surface_response.hpp"
 #include "acoustics/band_power.hpp"
+#include "simulation/air_pumping_outputs.hpp"
 #include "simulation/energy_budget_output.hpp"
 #include "simulation/greens_plots.hpp"
 #include "simulation/pattern_outputs.hpp"
@@ -61,17 +62,12 @@ Eigen::MatrixXd tread_compliance(const TreadSettings& tread, const TyreGrid& gri
   return Eigen::MatrixXd::Zero(grid.points(), grid.points());
 }
 
-// The air pumping step by step (air_pumping.hpp): the flows out of the patch at its edges, the
-// closed regions' share, and the air inside.
-void write_air_pumping_csv(const fs::path& path, const TyreContactTrace& t) {
-  std::ofstream out(path, std::ios::binary);
-  CsvWriter csv(out, {"time", "front_flow", "rear_flow", "closed_flow", "closed_volume", "enclosed_volume"});
-  const AirPumpingTrace& a = t.air_pumping;
-  for (Eigen::Index n = 0; n < t.time.size(); ++n) {
-    const double row[] = {t.time(n), a.front_flow(n), a.rear_flow(n), a.closed_flow(n), a.closed_volume(n), a.enclosed_volume(n)};
-    csv.row(row, 6);
-  }
-  close_output_file(out, path);
+// Over a porous road ([road.absorption]) the radiation's plane is its impedance plane: the
+// admittance at each anchor, as a plain function (the radiation does not link the road); empty
+// over a rigid road.
+PlaneAdmittance radiation_plane_admittance(const RoadAbsorption& absorption) {
+  if (absorption.rigid()) return {};
+  return [absorption](double frequency) { return absorption.normalised_admittance(frequency); };
 }
 
 void write_totals_csv(const fs::path& path, const TyreContactTrace& t) {
@@ -366,12 +362,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
         belt_budget_weights(grid.circumferential, grid.lateral, grid.circumference()));
   }
   sound.radiation.sample_rate_hz = 1.0 / dt;
-  // Over a porous road ([road.absorption]) the radiation's plane is its impedance plane: the
-  // admittance at each anchor, as a plain function (the radiation does not link the road).
-  if (!road->absorption().rigid())
-    sound.radiation.admittance = [absorption = road->absorption()](double frequency) {
-      return absorption.normalised_admittance(frequency);
-    };
+  sound.radiation.admittance = radiation_plane_admittance(road->absorption());
   sound.cache_folder = options.cache;
   sound.progress_sink = options.progress_sink;
   TyreStepOutputSettings step_outputs{fields, staged.staging() / "contact.h5", samples, settings.speed,
@@ -410,7 +401,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
   for (const auto& warning : trace.warnings) std::fprintf(stderr, "rollnoise: warning: %s\n", warning.c_str());
 
   write_totals_csv(staged.staging() / "contact.csv", trace);
-  if (run.air_pumping) write_air_pumping_csv(staged.staging() / "air_pumping.csv", trace);
+  if (run.air_pumping) write_air_pumping_csv(staged.staging() / "air_pumping.csv", trace.time, trace.air_pumping);
   // The snapshot at the largest total force: the most telling instant on a rough road.
   write_pressure_snapshot(staged.staging() / "pressure_snapshot.csv", outputs.snapshot_force(), grid);
   const std::vector<double> revolution = outputs.revolution();
@@ -450,19 +441,8 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     stages.lap("energy_budget");
     const std::string source = fs::path(file.path()).filename().string();
     PlotBatch* sound_plots = plots ? &plot_batch : nullptr;
-    // The air pumped out of the patch: a monopole at each edge of the steady patch, on the
-    // centre plane, air_pumping_source_height above the road (air_pumping.hpp).
     std::optional<MonopoleSources> air;
-    if (run.air_pumping) {
-      const AirPumpingTrace& pumped = trace.air_pumping;
-      air.emplace();
-      air->positions.resize(3, 2);
-      air->positions.col(0) = Eigen::Vector3d(pumped.front_edge_x, 0.0, air_pumping_source_height);
-      air->positions.col(1) = Eigen::Vector3d(pumped.rear_edge_x, 0.0, air_pumping_source_height);
-      air->flows.resize(pumped.front_flow.size(), 2);
-      air->flows.col(0) = pumped.front_flow;
-      air->flows.col(1) = pumped.rear_flow;
-    }
+    if (run.air_pumping) air = air_pumping_sources(trace.air_pumping);
     const MonopoleSources* air_sources = air ? &*air : nullptr;
     const nlohmann::json heard =
         sound_stream ? write_tyre_sound(staged.staging(), sound, *sound_stream, settings.speed, source, sound_plots, budget.get(),
@@ -472,20 +452,7 @@ CaseResult run_tyre_simulation(const CaseFile& file, const fs::path& out, std::c
     stages.skip();
     for (const auto& [key, value] : heard.items())
       if (key != "sound_stage_times_s") summary[key] = value;
-    if (run.air_pumping) {
-      // The contact side of the air pumping: where the flows leave, and what following the air
-      // cost inside the step loop.
-      const AirPumpingTrace& pumped = trace.air_pumping;
-      nlohmann::json& entry = summary["air_pumping"];
-      entry["front_edge_x_m"] = pumped.front_edge_x;
-      entry["rear_edge_x_m"] = pumped.rear_edge_x;
-      entry["source_height_m"] = air_pumping_source_height;
-      entry["sealing_gap_m"] = air_sealing_gap;
-      entry["most_closed_regions"] = pumped.most_closed_regions;
-      entry["mean_enclosed_volume_m3"] = pumped.enclosed_volume.mean();
-      entry["mean_closed_volume_m3"] = pumped.closed_volume.mean();
-      entry["time_s"] = pumped.seconds;
-    }
+    if (run.air_pumping) add_air_pumping_contact_summary(trace.air_pumping, summary["air_pumping"]);
     const nlohmann::json& sound_stages = heard.at("sound_stage_times_s");
     for (const auto& [key, value] : sound_stages.items()) summary["stage_times_s"][key] = value;
   }
