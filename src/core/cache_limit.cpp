@@ -42,7 +42,7 @@ void mark_cache_entry_used(const fs::path& entry) {
   (void)::utimensat(AT_FDCWD, entry.c_str(), nullptr, 0);
 }
 
-CacheTrim keep_cache_within(const fs::path& folder, std::uint64_t limit) {
+CacheTrim keep_cache_within(const fs::path& folder, std::uint64_t limit, const std::function<bool(const fs::path&)>& spare) {
   CacheTrim trim;
   std::error_code ec;
   std::vector<Scanned> entries;
@@ -63,6 +63,7 @@ CacheTrim keep_cache_within(const fs::path& folder, std::uint64_t limit) {
   });
   for (const Scanned& e : entries) {
     if (trim.bytes_after <= limit) break;
+    if (spare && spare(e.path)) continue;
     // Used since the scan (a hit, or stored again): keep it. Gone: another run removed it.
     struct timespec now_used {};
     std::uint64_t bytes = 0;

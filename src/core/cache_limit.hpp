@@ -18,6 +18,7 @@
 // limit whenever no store is under way.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 
 namespace rollnoise {
 
@@ -37,7 +38,10 @@ struct CacheTrim {
 
 // Removes the least recently used entries of `folder` until their total is at most `limit`
 // bytes. Files that cannot be removed are skipped (another run removed them, or the folder is
-// read-only: then nothing can be stored either). An absent folder holds nothing.
-CacheTrim keep_cache_within(const std::filesystem::path& folder, std::uint64_t limit);
+// read-only: then nothing can be stored either), and so are those `spare` names (a run's own
+// entries it has yet to read: the folder then stays over the limit until it trims again). An
+// absent folder holds nothing.
+CacheTrim keep_cache_within(const std::filesystem::path& folder, std::uint64_t limit,
+                            const std::function<bool(const std::filesystem::path&)>& spare = {});
 
 }  // namespace rollnoise

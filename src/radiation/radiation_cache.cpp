@@ -193,6 +193,8 @@ Eigen::Index AnchorOperators::power_rank() const {
 std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eigen::Index receivers, Eigen::Index columns,
                                                     const std::vector<Eigen::Index>& power_columns) const {
   const fs::path path = file_of(key);
+  // Loaded, or about to be solved: another store's trim may take it from here on.
+  release(key);
   const std::optional<FileIdentity> before = identity_of(path);
   if (!before) return std::nullopt;
   try {
@@ -209,6 +211,33 @@ std::optional<AnchorOperators> RadiationCache::load(const std::string& key, Eige
     std::fprintf(stderr, "rollnoise: warning: the radiation cache entry %s is damaged or foreign (%s): solving it again\n",
                  path.string().c_str(), error.what());
     return std::nullopt;
+  }
+}
+
+void RadiationCache::hold(const std::vector<std::string>& keys) const {
+  const std::lock_guard lock(held_mutex_);
+  held_.insert(keys.begin(), keys.end());
+}
+
+void RadiationCache::release(const std::string& key) const {
+  const std::lock_guard lock(held_mutex_);
+  held_.erase(key);
+}
+
+bool RadiationCache::held(const fs::path& entry) const {
+  const std::lock_guard lock(held_mutex_);
+  return held_.count(entry.stem().string()) > 0;
+}
+
+void RadiationCache::release_and_trim() const {
+  {
+    const std::lock_guard lock(held_mutex_);
+    held_.clear();
+  }
+  try {
+    keep_cache_within(folder_, limit_);
+  } catch (const std::exception&) {
+    // A folder that cannot be scanned holds nothing this run stored: the store warned already.
   }
 }
 
@@ -297,7 +326,7 @@ void RadiationCache::store(const std::string& key, const AnchorOperators& operat
       return;
     }
     temporary.rename_to(path);
-    keep_cache_within(folder_, limit_);
+    keep_cache_within(folder_, limit_, [this](const fs::path& entry) { return held(entry); });
   } catch (const std::exception& error) {
     if (!store_failed_.exchange(true))
       std::fprintf(stderr, "rollnoise: warning: cannot store in the radiation cache %s (%s): going on without storing\n",

@@ -57,7 +57,9 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -109,9 +111,21 @@ class RadiationCache {
   // depend on the cache. Safe to call from several threads.
   void store(const std::string& key, const AnchorOperators& operators, const AnchorDescription& description) const;
 
+  // A run's own entries, `keys`, spared by the trims of its stores until it has loaded (or solved)
+  // each: under a tight limit a store on one thread would otherwise remove an entry another thread
+  // is about to read, a miss the run made for itself. release_and_trim() ends that and trims the
+  // folder to the limit. Safe to call from several threads.
+  void hold(const std::vector<std::string>& keys) const;
+  void release_and_trim() const;
+
  private:
+  void release(const std::string& key) const;
+  bool held(const std::filesystem::path& entry) const;
+
   std::filesystem::path folder_;
   std::uint64_t limit_;
+  mutable std::mutex held_mutex_;
+  mutable std::set<std::string> held_;
   mutable std::atomic<bool> store_failed_{false};
   mutable std::atomic<bool> oversize_warned_{false};
 };

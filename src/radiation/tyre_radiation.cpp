@@ -269,6 +269,22 @@ void TyreRadiation::for_each_anchor(const std::vector<double>& anchor, Eigen::In
                                     const RadiationCache* cache, std::vector<double>& seconds,
                                     const std::function<void(std::size_t, AnchorOperators&&, bool)>& use) const {
   seconds.assign(anchor.size(), 0.0);
+  // This run's entries are spared by its own stores' trims until each is loaded (or solved), and
+  // the folder is trimmed to its limit once all are done (radiation_cache.hpp).
+  std::vector<std::string> keys;
+  if (cache) {
+    for (std::size_t a = 0; a < anchor.size(); ++a) {
+      const std::size_t level_index = level_of(anchor[a]);
+      keys.push_back(anchor_key(level_index, anchor[a], columns_of(level_index, active)));
+    }
+    cache->hold(keys);
+  }
+  struct Held {
+    const RadiationCache* cache;
+    ~Held() {
+      if (cache) cache->release_and_trim();
+    }
+  } held{cache};
   const auto solve_anchor = [&](std::size_t a) {
     const auto started = std::chrono::steady_clock::now();
     struct Clock {
@@ -280,7 +296,7 @@ void TyreRadiation::for_each_anchor(const std::vector<double>& anchor, Eigen::In
     const Level& level = levels_[level_index];
     // From the cache when it has the anchor (loaded here, in the worker, so that only the
     // anchors in hand are in memory), else solved and stored.
-    const std::string key = cache ? anchor_key(level_index, anchor[a], columns_of(level_index, active)) : std::string();
+    const std::string key = cache ? keys[a] : std::string();
     std::optional<AnchorOperators> cached;
     const EquivalentSources& model = anchor[a] > settings_.combined_sources_above_hz ? level.combined : level.monopoles;
     if (cache)

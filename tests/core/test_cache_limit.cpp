@@ -106,5 +106,25 @@ TEST(CacheLimit, RemovesTheLeastRecentlyUsedEntriesUntilTheyFit) {
   EXPECT_FALSE(fs::exists(a));
 }
 
+// A run spares its own entries it has yet to read: the oldest that are not spared go instead, and
+// when only spared ones are left the folder stays over the limit.
+TEST(CacheLimit, SparedEntriesStayAndTheNextOldestGo) {
+  const Folder f;
+  const fs::path a = f.file("radiation-a.h5", 1000, 5);
+  const fs::path b = f.file("radiation-b.h5", 1000, 4);
+  const fs::path c = f.file("radiation-c.h5", 1000, 3);
+  const auto spare_a = [&](const fs::path& entry) { return entry.filename() == a.filename(); };
+  const CacheTrim trim = keep_cache_within(f.path(), 2000, spare_a);
+  EXPECT_EQ(trim.removed, 1u);
+  EXPECT_TRUE(fs::exists(a));
+  EXPECT_FALSE(fs::exists(b));
+  EXPECT_TRUE(fs::exists(c));
+  const CacheTrim over = keep_cache_within(f.path(), 500, [](const fs::path&) { return true; });
+  EXPECT_EQ(over.removed, 0u);
+  EXPECT_EQ(over.bytes_after, 2000u);
+  EXPECT_EQ(keep_cache_within(f.path(), 1500).removed, 1u) << "unspared, the oldest goes";
+  EXPECT_FALSE(fs::exists(a));
+}
+
 }  // namespace
 }  // namespace rollnoise
