@@ -5,26 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "radiation/equivalent_sources.hpp"
 #include "radiation/impedance_plane_green.hpp"
 
 namespace rollnoise {
-namespace {
 
 using Complex = std::complex<double>;
-
-Complex free_field(const Eigen::Vector3d& x, const Eigen::Vector3d& s, double k) {
-  const double r = (x - s).norm();
-  return std::exp(Complex(0.0, -k * r)) / (4.0 * std::numbers::pi * r);
-}
-
-Eigen::Vector3cd free_field_gradient(const Eigen::Vector3d& x, const Eigen::Vector3d& s, double k) {
-  const Eigen::Vector3d d = x - s;
-  const double r = d.norm();
-  const Complex g = std::exp(Complex(0.0, -k * r)) / (4.0 * std::numbers::pi * r);
-  return (g * (Complex(0.0, -k) - 1.0 / r) / r) * d.cast<Complex>();
-}
-
-}  // namespace
 
 ReflectionRegion reflection_region(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& sources) {
   if (points.cols() == 0 || sources.cols() == 0) throw std::invalid_argument("reflection region: no points or no sources");
@@ -82,8 +68,8 @@ ReflectedField HalfSpaceGreen::correction(double r, double z, int derivatives) c
 }
 
 std::complex<double> HalfSpaceGreen::operator()(const Eigen::Vector3d& x, const Eigen::Vector3d& s) const {
-  const Eigen::Vector3d image(s.x(), s.y(), -s.z());
-  Complex g = free_field(x, s, k_) + free_field(x, image, k_);
+  // The rigid road's direct wave and image (equivalent_sources.hpp).
+  Complex g = helmholtz_green(x, s, k_, true);
   if (rigid()) return g;
   const double r = std::hypot(x.x() - s.x(), x.y() - s.y());
   // Only the value is needed: no differences.
@@ -93,8 +79,7 @@ std::complex<double> HalfSpaceGreen::operator()(const Eigen::Vector3d& x, const 
 }
 
 Eigen::Vector3cd HalfSpaceGreen::gradient(const Eigen::Vector3d& x, const Eigen::Vector3d& s) const {
-  const Eigen::Vector3d image(s.x(), s.y(), -s.z());
-  Eigen::Vector3cd g = free_field_gradient(x, s, k_) + free_field_gradient(x, image, k_);
+  Eigen::Vector3cd g = helmholtz_green_gradient(x, s, k_, true);
   if (rigid()) return g;
   const double dx = x.x() - s.x(), dy = x.y() - s.y();
   const double r = std::hypot(dx, dy);
