@@ -43,7 +43,8 @@ PMatrixLcpResult solve_pmatrix_lcp(const Eigen::MatrixXd& m, const Eigen::Vector
 // symmetric and, scaled by its diagonal, diagonally dominant enough that its condition number is
 // at most 25 by Gershgorin's bound (the plate with its Winkler tread: a point's own compliance is
 // 4–5 times its coupling to the whole patch), each basic block is solved by preconditioned
-// conjugate gradients from the last solution instead: a dozen FFT products, no factorisation.
+// conjugate gradients instead, started from the straight line through the last two solutions
+// (moved with the road by relabel): about eleven FFT products a step, no factorisation.
 // The factor stays the fallback. A pivoting iteration's conjugate gradients stop as soon as
 // every sign test of the exchange is decided beyond a bound on their error (the exchange is then
 // the exact solve's), or at a residual of 1e-13 of max |q|; the last iteration's, once all signs
@@ -83,6 +84,10 @@ class PMatrixLcpSolver {
   bool iterative() const noexcept { return iterative_; }
   long cg_iterations() const noexcept { return cg_iterations_; }
   const Eigen::MatrixXd& matrix() const noexcept { return *m_; }
+  // Whether the conjugate gradients' pass over the window takes four values at a time (AVX,
+  // where the processor has it: the default) or one; both give the same bits. Returns whether
+  // AVX is now used.
+  bool use_avx(bool on) noexcept;
 
  private:
   enum class Cg { converged, decided, failed };
@@ -92,13 +97,8 @@ class PMatrixLcpSolver {
   // unusable).
   Cg conjugate_gradients(const std::vector<char>& basic, const Eigen::VectorXd& q, Eigen::VectorXd& z, Eigen::VectorXd& w,
                          double tolerance);
-  // Whether every sign test is decided with z's error on A at most z_error and w's (from mz_)
-  // off A at most w_error, and if so whether some index is infeasible.
-  enum class Signs { undecided, infeasible, feasible };
   // The warm start's basic set, corrected by the gaps and forces of z = last_z_.
   void correct_start(const Eigen::VectorXd& q);
-  Signs decide_signs(const std::vector<char>& basic, const Eigen::VectorXd& q, const Eigen::VectorXd& z, double z_error,
-                     double w_error, double tolerance) const;
 
   std::shared_ptr<const Eigen::MatrixXd> m_;
   BorderedLu factor_;
@@ -106,12 +106,15 @@ class PMatrixLcpSolver {
   bool iterative_ = false;
   bool decide_early_ = true;
   bool correct_start_ = true;
+  bool avx_ = false;
   long cg_iterations_ = 0;
   PMatrixLcpResult result_;
   std::vector<char> shifted_;
-  std::vector<Eigen::Index> active_;
-  // The last solution (the next warm start), and the conjugate gradients' vectors (mz_ = M·z).
-  Eigen::VectorXd last_z_, shifted_z_, inverse_diagonal_, mask_, r_, s_, p_, mp_, mz_;
+  std::vector<Eigen::Index> active_, leaving_;
+  // The last two solutions (the next warm start), and the conjugate gradients' vectors (mz_ = M·z).
+  long solves_ = 0;  // since the last warm_start
+  std::vector<double> on_bits_;  // the basic set as a mask for the AVX pass: all bits set on it
+  Eigen::VectorXd last_z_, older_z_, shifted_z_, inverse_diagonal_, r_, s_, p_, mp_, mz_;
   // Bounds on any basic block: ‖z's error‖₂ per ‖D^{-1/2}·residual‖₂, ‖z's error‖∞ per
   // ‖residual‖∞, and the largest 2-norm and 1-norm of M's rows without their diagonal.
   // Whether mz_ = M·z for the z of the last pivoting iteration; up to how many indices leaving

@@ -6,14 +6,11 @@
 #include <new>
 #include <stdexcept>
 
+#include "core/avx_support.hpp"
 #include "core/real_fft_batch.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
-#endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define ROLLNOISE_AVX_PRODUCTS 1
 #endif
 
 namespace rollnoise {
@@ -39,7 +36,7 @@ int convolution_length(int window) {
   return best;
 }
 
-#if defined(ROLLNOISE_AVX_PRODUCTS)
+#if defined(ROLLNOISE_AVX_PATHS)
 // multiply_block with four bins to a register, for processors with AVX (asked once, at
 // construction): per lane the same multiplications and additions in the same order as the SSE2
 // loop's, and no fused multiply-add, so both give the same bits. `kernel_*`: the block's kernel;
@@ -68,6 +65,38 @@ __attribute__((target("avx"))) void multiply_block_avx(int size, int stride, con
         _mm256_storeu_pd(yi + k0 + 4 * c, si[c]);
       }
     }
+  }
+}
+#endif
+
+#if defined(ROLLNOISE_AVX_PATHS)
+// FFTW's interleaved bins split into real and imaginary rows, and back, four bins to two
+// registers (the compiler's own loops move one value at a time): moves only, the same bits.
+__attribute__((target("avx"))) void split_bins_avx(const double* from, int bins, double* to_re, double* to_im) {
+  int k = 0;
+  for (; k + 4 <= bins; k += 4) {
+    const __m256d a = _mm256_loadu_pd(from + 2 * k), b = _mm256_loadu_pd(from + 2 * k + 4);  // r0 i0 r1 i1, r2 i2 r3 i3
+    const __m256d even = _mm256_permute2f128_pd(a, b, 0x20), odd = _mm256_permute2f128_pd(a, b, 0x31);
+    _mm256_storeu_pd(to_re + k, _mm256_unpacklo_pd(even, odd));
+    _mm256_storeu_pd(to_im + k, _mm256_unpackhi_pd(even, odd));
+  }
+  for (; k < bins; ++k) {
+    to_re[k] = from[2 * k];
+    to_im[k] = from[2 * k + 1];
+  }
+}
+
+__attribute__((target("avx"))) void join_bins_avx(const double* from_re, const double* from_im, int bins, double* to) {
+  int k = 0;
+  for (; k + 4 <= bins; k += 4) {
+    const __m256d re = _mm256_loadu_pd(from_re + k), im = _mm256_loadu_pd(from_im + k);
+    const __m256d even = _mm256_unpacklo_pd(re, im), odd = _mm256_unpackhi_pd(re, im);  // r0 i0 r2 i2, r1 i1 r3 i3
+    _mm256_storeu_pd(to + 2 * k, _mm256_permute2f128_pd(even, odd, 0x20));
+    _mm256_storeu_pd(to + 2 * k + 4, _mm256_permute2f128_pd(even, odd, 0x31));
+  }
+  for (; k < bins; ++k) {
+    to[2 * k] = from_re[k];
+    to[2 * k + 1] = from_im[k];
   }
 }
 #endif
@@ -178,17 +207,12 @@ WindowConvolution::WindowConvolution(const Eigen::MatrixXd& g, int window, int l
 }
 
 bool WindowConvolution::use_avx(bool on) noexcept {
-#if defined(ROLLNOISE_AVX_PRODUCTS)
-  avx_ = on && __builtin_cpu_supports("avx");
-#else
-  (void)on;  // no AVX path on this processor family
-  avx_ = false;
-#endif
+  avx_ = avx_available(on);
   return avx_;
 }
 
 void WindowConvolution::multiply_block(int offset, int size, const double* kernel_re, const double* kernel_im) {
-#if defined(ROLLNOISE_AVX_PRODUCTS)
+#if defined(ROLLNOISE_AVX_PATHS)
   if (avx_) {
     multiply_block_avx(size, stride_, kernel_re, kernel_im, re(in_re_.get(), offset), re(in_im_.get(), offset),
                        re(out_re_.get(), offset), re(out_im_.get(), offset));
@@ -286,6 +310,12 @@ void WindowConvolution::apply(const Eigen::VectorXd& z, Eigen::VectorXd& y) {
     const double* from = spectrum_.get() + 2 * static_cast<std::size_t>(j) * bins_;
     double* to_re = re(in_re_.get(), j);
     double* to_im = re(in_im_.get(), j);
+#if defined(ROLLNOISE_AVX_PATHS)
+    if (avx_) {
+      split_bins_avx(from, bins_, to_re, to_im);
+      continue;
+    }
+#endif
     for (int k = 0; k < bins_; ++k) {
       to_re[k] = from[2 * k];
       to_im[k] = from[2 * k + 1];
@@ -297,6 +327,12 @@ void WindowConvolution::apply(const Eigen::VectorXd& z, Eigen::VectorXd& y) {
     const double* from_re = re(out_re_.get(), j);
     const double* from_im = re(out_im_.get(), j);
     double* to = spectrum_.get() + 2 * static_cast<std::size_t>(j) * bins_;
+#if defined(ROLLNOISE_AVX_PATHS)
+    if (avx_) {
+      join_bins_avx(from_re, from_im, bins_, to);
+      continue;
+    }
+#endif
     for (int k = 0; k < bins_; ++k) {
       to[2 * k] = from_re[k];
       to[2 * k + 1] = from_im[k];

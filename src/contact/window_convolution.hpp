@@ -44,7 +44,8 @@ class WindowConvolution {
   // Whether the even/odd reduction of a laterally symmetric G is used.
   bool lateral_symmetry() const noexcept { return folded_; }
   // Whether the spectra's multiply-adds take four bins at a time (AVX, where the processor has
-  // it: the default) or two (SSE2); both give the same bits. Returns whether AVX is now used.
+  // it: the default) or two (SSE2), and their splits into real and imaginary rows four bins at a
+  // time or one; both give the same bits. Returns whether AVX is now used.
   bool use_avx(bool on) noexcept;
 
  private:

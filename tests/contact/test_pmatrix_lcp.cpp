@@ -2,6 +2,7 @@
 // its factor across steps (bordered_lu.hpp). The dense-LU solve_pmatrix_lcp is checked against
 // enumeration of all basic sets; the persistent solver against it, step by step, on a rolling
 // sequence of a translation-invariant, non-symmetric matrix like the two-layer tyre's G0.
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -455,6 +456,30 @@ TEST(PMatrixLcp, AWarmStartCorrectedByItsGapsReachesTheSameSolutionInFewerPivots
   }
   EXPECT_GT(pivots_exact, 100) << "the road should force exchanges at most steps";
   EXPECT_LT(pivots_corrected, pivots_exact);
+}
+
+TEST(PMatrixLcp, TheConjugateGradientsPassGivesTheSameBitsFourValuesAtATimeAsOne) {
+  // The AVX pass over the window (updates and sign tests) against the scalar loop: the same
+  // operations per value, so the same iterates, exchanges and solutions, bit for bit.
+  const PlateLikeRolling rolling;
+  const Window& w = rolling.w;
+  PMatrixLcpSolver wide(rolling.m, 48, ContactWindow{w.length, w.lateral});
+  PMatrixLcpSolver narrow(rolling.m, 48, ContactWindow{w.length, w.lateral});
+  if (!wide.use_avx(true)) GTEST_SKIP() << "this processor has no AVX: only the scalar pass runs";
+  ASSERT_FALSE(narrow.use_avx(false));
+  ASSERT_TRUE(wide.iterative());
+  for (int step = 0; step < 150; ++step) {
+    rolling.roll(step, wide, narrow);
+    ASSERT_EQ(wide.result().basic, narrow.result().basic) << "step " << step;
+    ASSERT_EQ(wide.result().iterations, narrow.result().iterations) << "step " << step;
+    for (Eigen::Index i = 0; i < w.points(); ++i) {
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(wide.result().z(i)), std::bit_cast<std::uint64_t>(narrow.result().z(i)))
+          << "step " << step << ", point " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(wide.result().w(i)), std::bit_cast<std::uint64_t>(narrow.result().w(i)))
+          << "step " << step << ", point " << i;
+    }
+  }
+  EXPECT_EQ(wide.cg_iterations(), narrow.cg_iterations());
 }
 
 }  // namespace
