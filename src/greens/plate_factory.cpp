@@ -7,7 +7,6 @@
 #include "core/error.hpp"
 
 namespace rollnoise {
-namespace {
 
 TreadSettings read_tread(const ConfigTable& tyre) {
   const auto table = tyre.subtable("tread");
@@ -34,8 +33,6 @@ TreadSettings read_tread(const ConfigTable& tyre) {
   t.reject_unknown_keys();
   return tread;
 }
-
-}  // namespace
 
 PlateTyre read_plate_tyre(const ConfigTable& tyre) {
   tyre.choice("model", {"plate"});

@@ -28,6 +28,10 @@ struct PlateTyre {
   double tread_width = 0.0;   // m, the width in contact with the road, centred on the belt; 0 = width
 };
 
+// Reads [tyre.tread] (required; type winkler, halfspace or nonlinear): the plate's tread, or the
+// local compliance a tabulated tyre's table lacks.
+TreadSettings read_tread(const ConfigTable& tyre);
+
 // Reads model = "plate"; unknown keys are rejected.
 PlateTyre read_plate_tyre(const ConfigTable& tyre);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/config_table.hpp"
+#include "core/error.hpp"
 #include "greens/fitted_modes_cache.hpp"
 #include "greens/modal_table_cache.hpp"
 #include "greens/static_residual.hpp"
@@ -100,13 +101,25 @@ RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre) {
     spec.tread_width = spec.plate->tread_width;
     return spec;
   }
-  reject_separate_tread(tyre, spec.model);
   if (spec.model == "two_layer") {
+    reject_separate_tread(tyre, spec.model);
     spec.two_layer = std::make_shared<const TwoLayerParameters>(read_two_layer_tyre(tyre));
     spec.radius = spec.two_layer->radius;
     spec.width = spec.two_layer->width;
     spec.tread_width = spec.two_layer->tread_width > 0.0 ? spec.two_layer->tread_width : spec.two_layer->width;
   } else {
+    // A table holds its modes up to its orders and nothing beyond them: the contact cells get no
+    // local compliance from it (the two-layer model adds its static residual, the plate its
+    // tread), and the contact matrix of a table alone is close to singular. The tread says what
+    // the table lacks. A misspelt key is reported first; a missing tread is named in the file that
+    // says model = "tabulated" (a model file, or the case itself).
+    reject_unknown_tabulated_keys(tyre);
+    if (!tyre.contains("tread"))
+      throw InputError(tyre.source_of("model"), "[tyre] tread",
+                       "is required with model = \"tabulated\" to roll: a table holds its modes up to its orders "
+                       "and no local compliance of the contact cells beyond them; give the tread's, a [tyre.tread] "
+                       "table with type = \"winkler\" (stiffness_per_area), \"halfspace\" or \"nonlinear\"");
+    spec.tread = read_tread(tyre);
     spec.table = read_tabulated_tyre(tyre);
     spec.radius = spec.table->radius;
     spec.width = spec.table->width;
@@ -157,6 +170,11 @@ RollingTyreModel make_rolling_tyre_model(RollingTyreSpec spec, const std::option
   const std::string fit_key = fitted_modes_key(modal_table_content_key(table), tyre_mode_fit_options());
   RollingTyreModel out = fitted_model(model, std::move(table), elapsed(), false, cache_directory, fit_key);
   out.tread_width = out.width;
+  out.tread = spec.tread;
+  if (spec.tread) {
+    out.tread_youngs_modulus = spec.tread->youngs_modulus;
+    out.tread_poisson_ratio = spec.tread->poisson_ratio;
+  }
   return out;
 }
 

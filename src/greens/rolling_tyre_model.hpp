@@ -65,11 +65,14 @@ struct RollingTyreSpec {
   std::optional<PlateTyre> plate;
   std::shared_ptr<const TwoLayerParameters> two_layer;  // (held by pointer: its header is heavy)
   std::optional<ModalReceptanceTable> table;  // tabulated: the file's table
+  // tabulated: the local compliance of the contact cells that the table's modes lack
+  // ([tyre.tread], required for rolling).
+  std::optional<TreadSettings> tread;
 };
 
 // Reads the [tyre] table (or a model file's top level) of model plate, two_layer or tabulated.
-// Unknown keys, non-physical values and a [tyre.tread] given to a model that includes its tread
-// are InputErrors naming the file and the key.
+// Unknown keys, non-physical values, a [tyre.tread] given to the two-layer model (which includes
+// its tread) and a tabulated model without one are InputErrors naming the file and the key.
 RollingTyreSpec read_rolling_tyre_spec(const ConfigTable& tyre);
 
 // The rolling model of a checked table. `cache_directory`: where two-layer tables and fits are

@@ -11,11 +11,16 @@
 
 namespace rollnoise {
 
+void reject_unknown_tabulated_keys(const ConfigTable& tyre) {
+  // [tyre.tread]: the local compliance a rolling tabulated tyre adds (rolling_tyre_model.hpp).
+  for (const std::string_view key : std::array<std::string_view, 4>{"model", "file", "pattern", "tread"}) tyre.contains(key);
+  tyre.reject_unknown_keys();
+}
+
 ModalReceptanceTable read_tabulated_tyre(const ConfigTable& tyre) {
   namespace fs = std::filesystem;
   // Unknown keys first: a misspelt key is then reported as such, not as a missing one.
-  for (const std::string_view key : std::array<std::string_view, 3>{"model", "file", "pattern"}) tyre.contains(key);
-  tyre.reject_unknown_keys();
+  reject_unknown_tabulated_keys(tyre);
   tyre.choice("model", {"tabulated"});
   if (!tyre.contains("file")) tyre.fail("file", "is required: the HDF5 file of the modal receptance table");
   const std::string name = tyre.text("file");
