@@ -20,6 +20,7 @@ AirPumping::AirPumping(const AirPumpingGeometry& geometry) : geometry_(geometry)
     s.gap.assign(points, 0.0);
     s.destination.assign(points, none);
     s.closed.assign(points, 0);
+    s.thin.assign(points, 0);
   }
   first_.assign(static_cast<std::size_t>(g.lateral), 0);
   last_.assign(static_cast<std::size_t>(g.lateral), 0);
@@ -28,6 +29,7 @@ AirPumping::AirPumping(const AirPumpingGeometry& geometry) : geometry_(geometry)
   gap_.assign(points, 0.0);
   destination_.assign(points, none);
   closed_.assign(points, 0);
+  thin_.assign(points, 0);
   opens_front_.assign(points, 0);
   opens_rear_.assign(points, 0);
 }
@@ -120,10 +122,12 @@ AirPumpingStep AirPumping::step(const Eigen::Ref<const Eigen::VectorXd>& gap, co
       gap_[p] = g;
       destination_[p] = none;
       closed_[p] = 0;
+      thin_[p] = 0;
       if (!inside(i, j)) continue;
       const int region = label_[p];
       if (region < 0) {
         destination_[p] = nearer_edge(i);  // a thin cell: its air seeps out through the texture
+        thin_[p] = 1;
       } else {
         const bool f = opens_front_[static_cast<std::size_t>(region)], r = opens_rear_[static_cast<std::size_t>(region)];
         closed_[p] = !f && !r;
@@ -146,11 +150,13 @@ AirPumpingStep AirPumping::step(const Eigen::Ref<const Eigen::VectorXd>& gap, co
         const double flow = -(gap_[p] - slot.gap[before]) * per_second;
         (d == front ? out.front_flow : out.rear_flow) += flow;
         if (now ? closed_[p] : slot.closed[before]) out.closed_flow += flow;
+        if (now ? thin_[p] : slot.thin[before]) out.thin_flow += flow;
       }
   // Step n's state takes the place of step n − p's, which has been read.
   std::swap(slot.gap, gap_);
   std::swap(slot.destination, destination_);
   std::swap(slot.closed, closed_);
+  std::swap(slot.thin, thin_);
   out.ready = ready;
   ++steps_;
   return out;

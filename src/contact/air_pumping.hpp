@@ -60,6 +60,7 @@ struct AirPumpingStep {
   double front_flow = 0.0;  // through the front edge (the leading edge, +x)
   double rear_flow = 0.0;   // through the rear edge
   double closed_flow = 0.0;  // of which from closed regions
+  double thin_flow = 0.0;    // and from thin cells (gaps below the sealing gap)
   double closed_volume = 0.0;   // the air in closed regions now
   double enclosed_volume = 0.0;  // the air inside the patch now (closed, open and thin cells)
   int closed_regions = 0;
@@ -68,7 +69,7 @@ struct AirPumpingStep {
 
 // A run's air pumping, step by step (rolling_tyre.hpp fills it when asked).
 struct AirPumpingTrace {
-  Eigen::VectorXd front_flow, rear_flow, closed_flow;  // m³/s out of the patch, per step
+  Eigen::VectorXd front_flow, rear_flow, closed_flow, thin_flow;  // m³/s out of the patch, per step
   Eigen::VectorXd closed_volume, enclosed_volume;      // m³
   double front_edge_x = 0.0;  // m: the steady patch's leading edge (window coordinates, axle at 0)
   double rear_edge_x = 0.0;   // and its trailing edge, where the flows leave
@@ -94,6 +95,7 @@ class AirPumping {
     std::vector<double> gap;
     std::vector<signed char> destination;
     std::vector<char> closed;
+    std::vector<char> thin;
   };
   AirPumpingGeometry geometry_;
   std::size_t steps_ = 0;
@@ -106,6 +108,7 @@ class AirPumping {
   std::vector<double> gap_;
   std::vector<signed char> destination_;
   std::vector<char> closed_;
+  std::vector<char> thin_;
 };
 
 }  // namespace rollnoise

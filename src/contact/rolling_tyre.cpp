@@ -410,7 +410,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
     air.emplace(AirPumpingGeometry{grid.window, grid.lateral, grid.dx(), grid.dy(), substeps, dt});
     air_gap.resize(points);
     AirPumpingTrace& a = trace.air_pumping;
-    for (Eigen::VectorXd* v : {&a.front_flow, &a.rear_flow, &a.closed_flow, &a.closed_volume, &a.enclosed_volume})
+    for (Eigen::VectorXd* v : {&a.front_flow, &a.rear_flow, &a.closed_flow, &a.thin_flow, &a.closed_volume, &a.enclosed_volume})
       v->setZero(rows);
     const ContactExtent steady_extent = contact_extent(grid, steady.force);
     a.front_edge_x = grid.x(steady_extent.i_max) + 0.5 * grid.dx();
@@ -525,6 +525,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
       a.front_flow(row) = pumped.front_flow;
       a.rear_flow(row) = pumped.rear_flow;
       a.closed_flow(row) = pumped.closed_flow;
+      a.thin_flow(row) = pumped.thin_flow;
       a.closed_volume(row) = pumped.closed_volume;
       a.enclosed_volume(row) = pumped.enclosed_volume;
       a.most_closed_regions = std::max(a.most_closed_regions, pumped.closed_regions);
@@ -535,6 +536,7 @@ TyreContactTrace simulate_rolling_tyre(const RollingModes& modes, const Eigen::M
           a.front_flow(k) = pumped.front_flow;
           a.rear_flow(k) = pumped.rear_flow;
           a.closed_flow(k) = pumped.closed_flow;
+          a.thin_flow(k) = pumped.thin_flow;
         }
       a.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     }

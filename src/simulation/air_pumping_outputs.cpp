@@ -20,10 +20,10 @@ MonopoleSources air_pumping_sources(const AirPumpingTrace& pumped) {
 
 void write_air_pumping_csv(const std::filesystem::path& path, const Eigen::VectorXd& time, const AirPumpingTrace& a) {
   std::ofstream out(path, std::ios::binary);
-  CsvWriter csv(out, {"time", "front_flow", "rear_flow", "closed_flow", "closed_volume", "enclosed_volume"});
+  CsvWriter csv(out, {"time", "front_flow", "rear_flow", "closed_flow", "thin_flow", "closed_volume", "enclosed_volume"});
   for (Eigen::Index n = 0; n < time.size(); ++n) {
-    const double row[] = {time(n), a.front_flow(n), a.rear_flow(n), a.closed_flow(n), a.closed_volume(n), a.enclosed_volume(n)};
-    csv.row(row, 6);
+    const double row[] = {time(n), a.front_flow(n), a.rear_flow(n), a.closed_flow(n), a.thin_flow(n), a.closed_volume(n), a.enclosed_volume(n)};
+    csv.row(row, std::size(row));
   }
   close_output_file(out, path);
 }

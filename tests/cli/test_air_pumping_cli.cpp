@@ -82,7 +82,7 @@ TEST(AirPumpingCli, APatternedTyrePumpsWhenTheKeyTurnsItOnAndNotByDefault) {
   const double with_air = on["sound_power"]["total_W"].get<double>(), without = off["sound_power"]["total_W"].get<double>();
   EXPECT_NEAR(with_air, without + air["total_W"].get<double>(), 1e-9 * with_air);
   EXPECT_TRUE(contains(first_line(ws.path("on") / "budget.csv"), ",Lw_air_pumping_dB_re_1pW"));
-  EXPECT_EQ(first_line(ws.path("on") / "air_pumping.csv"), "time,front_flow,rear_flow,closed_flow,closed_volume,enclosed_volume");
+  EXPECT_EQ(first_line(ws.path("on") / "air_pumping.csv"), "time,front_flow,rear_flow,closed_flow,thin_flow,closed_volume,enclosed_volume");
   EXPECT_EQ(count_lines(read_text(ws.path("on") / "air_pumping.csv")), count_lines(read_text(ws.path("on") / "contact.csv")));
   EXPECT_FALSE(fs::exists(ws.path("off") / "air_pumping.csv"));
   EXPECT_FALSE(contains(first_line(ws.path("off") / "budget.csv"), "air_pumping"));

@@ -60,18 +60,56 @@ struct Scene {
   }
 };
 
-TEST(AirPumping, ClosedCavitySqueezedAtAKnownRateGivesItsFlowAndTheMonopolePressure) {
-  // 12 cells of 2 × 2 mm, 3 mm deep, squeezed by a 0.5 mm burst at 1 kHz; 100 steps a period.
+// 12 cells of 2 × 2 mm (the Scene's cavity) squeezed by a burst at 1 kHz, 100 steps a period,
+// one column a step: the cavity (4 columns) stays ahead of the centre (299.5) to step 277.
+struct SqueezedCavity {
   Scene scene;
-  scene.window = 600;
-  scene.last = 594;
-  scene.start = 580;  // one column a step: the cavity (4 columns) stays ahead of the centre (299.5) to step 277
-  const double dx = 2e-3, dy = 2e-3, dt = 1e-5, depth = 3e-3, squeeze = 0.5e-3;
-  const Burst burst{1.35e-3, 0.45e-3, 2.0 * std::numbers::pi * 1000.0};  // 1.2e-4 of its peak at the ends
-  const std::size_t steps = 270;
-  AirPumping air(AirPumpingGeometry{scene.window, scene.lateral, dx, dy, 1, dt});
+  double dx = 2e-3, dy = 2e-3, dt = 1e-5;
+  Burst burst{1.35e-3, 0.45e-3, 2.0 * std::numbers::pi * 1000.0};  // 1.2e-4 of its peak at the ends
+  std::size_t steps = 270;
+  SqueezedCavity() {
+    scene.window = 600;
+    scene.last = 594;
+    scene.start = 580;
+  }
+  double area() const { return scene.columns * (scene.j1 - scene.j0 + 1) * dx * dy; }
+  AirPumpingGeometry geometry() const { return {scene.window, scene.lateral, dx, dy, 1, dt}; }
+  // The air a cavity `depth − squeeze·burst(t)` deep gives up over step n (n ≥ 1): −ΔV/Δt.
+  double flow(std::size_t n, double squeeze) const {
+    const double t = static_cast<double>(n) * dt;
+    return squeeze * area() * (burst.value(t) - burst.value(t - dt)) / dt;
+  }
+};
+
+TEST(AirPumping, ACavityThinnerThanTheSealingGapSeepsOutAtTheNearerEdgeAsThinFlow) {
+  // The squeezed cavity 0.1 mm deep (below the 0.14 mm sealing gap), squeezed by 0.05 mm: no
+  // region forms, and the air the cells give up, −ΔV/Δt, counts as thin flow at the nearer edge.
+  const SqueezedCavity cavity;
+  const double depth = 0.1e-3, squeeze = 0.05e-3;
+  AirPumping air(cavity.geometry());
+  Eigen::VectorXd gap(cavity.scene.window * cavity.scene.lateral), force(gap.size());
+  for (std::size_t n = 0; n < cavity.steps; ++n) {
+    cavity.scene.fill(n, depth - squeeze * cavity.burst.value(static_cast<double>(n) * cavity.dt), gap, force);
+    const AirPumpingStep s = air.step(gap, force);
+    EXPECT_EQ(s.closed_regions + s.open_regions, 0);
+    if (n == 0) continue;
+    EXPECT_NEAR(s.front_flow, cavity.flow(n, squeeze), 1e-12 * squeeze * cavity.area() * cavity.burst.omega);
+    EXPECT_EQ(s.rear_flow, 0.0);
+    EXPECT_EQ(s.closed_flow, 0.0);
+    EXPECT_NEAR(s.thin_flow, s.front_flow, 1e-18);
+  }
+}
+
+TEST(AirPumping, ClosedCavitySqueezedAtAKnownRateGivesItsFlowAndTheMonopolePressure) {
+  // The squeezed cavity 3 mm deep, squeezed by 0.5 mm.
+  const SqueezedCavity cavity;
+  const Scene& scene = cavity.scene;
+  const double dt = cavity.dt, depth = 3e-3, squeeze = 0.5e-3;
+  const Burst& burst = cavity.burst;
+  const std::size_t steps = cavity.steps;
+  AirPumping air(cavity.geometry());
   Eigen::VectorXd gap(scene.window * scene.lateral), force(gap.size());
-  const double cells = scene.columns * (scene.j1 - scene.j0 + 1), area = cells * dx * dy;
+  const double area = cavity.area();
   Eigen::MatrixXd flows(steps, 2);
   double largest = 0.0, worst = 0.0;
   for (std::size_t n = 0; n < steps; ++n) {
@@ -85,10 +123,11 @@ TEST(AirPumping, ClosedCavitySqueezedAtAKnownRateGivesItsFlowAndTheMonopolePress
     flows(static_cast<Eigen::Index>(n), 1) = s.rear_flow;
     if (n == 0) continue;
     // The air the cavity gives up over the step: −ΔV/Δt, exactly.
-    const double expected = squeeze * area * (burst.value(t) - burst.value(t - dt)) / dt;
+    const double expected = cavity.flow(n, squeeze);
     EXPECT_NEAR(s.front_flow, expected, 1e-12 * squeeze * area * burst.omega);
     EXPECT_EQ(s.rear_flow, 0.0);
     EXPECT_NEAR(s.closed_flow, s.front_flow, 1e-18);
+    EXPECT_EQ(s.thin_flow, 0.0);  // 3 mm deep: every cell conducts
     largest = std::max(largest, std::abs(expected));
     worst = std::max(worst, std::abs(s.front_flow - squeeze * area * burst.first(t - 0.5 * dt)));
   }
