@@ -24,7 +24,8 @@ bool gnuplot_available() {
 
 namespace {
 
-// Runs `gnuplot SCRIPT` in `dir`, its messages on our stdout as before. Not std::system(): that
+// Runs `gnuplot SCRIPT` in `dir`, its messages on our stderr beside our own warnings about it
+// (stdout stays for what the command reports). Not std::system(): that
 // ignores SIGINT in the caller while it waits, and polls nothing, so a Ctrl-C while a large
 // plot draws would be lost, or leave the run's staging folder to the watchdog. Here the wait
 // polls the CancellationToken: on Ctrl-C gnuplot is stopped and Interrupted thrown, which
@@ -42,7 +43,7 @@ int run_gnuplot(const std::filesystem::path& dir, const std::vector<std::string>
   if (child < 0) return -1;
   if (child == 0) {
     // Only async-signal-safe calls before exec: the parent has other threads.
-    if (::chdir(dir.c_str()) != 0 || ::dup2(STDOUT_FILENO, STDERR_FILENO) < 0) ::_exit(127);
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
     ::execvp("gnuplot", const_cast<char* const*>(argv.data()));
     ::_exit(127);
   }
@@ -70,7 +71,7 @@ bool write_plot(const std::filesystem::path& dir, const std::string& name, const
     std::fprintf(stderr, "rollnoise: warning: gnuplot is not installed; wrote %s.gp but no PNG\n", name.c_str());
     return false;
   }
-  std::fflush(stdout);  // gnuplot's messages after ours
+  std::fflush(stderr);  // gnuplot's messages after ours
   if (run_gnuplot(dir, {name + ".gp"}) != 0) {
     std::fprintf(stderr, "rollnoise: warning: gnuplot failed on %s.gp; no PNG written\n", name.c_str());
     return false;
@@ -93,7 +94,7 @@ bool PlotBatch::draw() {
   }
   std::vector<std::string> scripts;
   for (const std::string& name : names) scripts.push_back(name + ".gp");
-  std::fflush(stdout);
+  std::fflush(stderr);
   if (run_gnuplot(dir_, scripts) == 0) return true;
   // Which failed: each alone (gnuplot stops at the first error).
   bool all = true;

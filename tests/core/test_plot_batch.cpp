@@ -73,10 +73,14 @@ TEST(PlotBatch, AFailingScriptIsNamedAndTheOthersAreDrawn) {
   batch.add("first", first_script());
   batch.add("broken", "set terminal pngcairo\nset output 'broken.png'\nplot no_such_function(x)\n");
   batch.add("second", second_script());
+  testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
   EXPECT_FALSE(batch.draw());
   const std::string errors = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   EXPECT_NE(errors.find("gnuplot failed on broken.gp"), std::string::npos) << errors;
+  // gnuplot's own reason beside ours, on stderr (not on the command's stdout).
+  EXPECT_NE(errors.find("undefined function: no_such_function"), std::string::npos) << errors;
   EXPECT_EQ(errors.find("first.gp"), std::string::npos) << errors;
   EXPECT_EQ(errors.find("second.gp"), std::string::npos) << errors;
   EXPECT_TRUE(fs::exists(folder.path() / "first.png"));
