@@ -1,12 +1,18 @@
 #include "audio/pass_by.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "audio/looped_lagrange.hpp"
+#include "audio/moving_image_filter.hpp"
 #include "core/real_fft_batch.hpp"
 
 namespace rollnoise {
@@ -58,60 +64,27 @@ struct Path {
   double gain;
 };
 
-// x mod n in [0, n) for any sign of x (n > 0).
-Eigen::Index wrap(Eigen::Index x, Eigen::Index n) {
-  const Eigen::Index m = x % n;
-  return m < 0 ? m + n : m;
-}
-
-// The looped source at fractional sample position u, by 6-point Lagrange interpolation on
-// samples floor(u) − 2 ... floor(u) + 3. Six points rather than four: the error for a tone of
-// frequency f is at most about 5e−3·(2π f/fs)^6 (mid-interval) (1.7e−5, −95 dB, for 3 kHz
-// at 48 kHz), against 1e−3 (−60 dB) for Catmull-Rom, for two more multiply-adds.
-double interpolate(const Eigen::VectorXd& x, double u) {
-  const Eigen::Index n = x.size();
-  const double period = static_cast<double>(n);
-  double v = u - period * std::floor(u / period);  // [0, n], n only by rounding
-  if (v >= period) v = 0.0;
-  const auto i0 = static_cast<Eigen::Index>(v);
-  const double f = v - static_cast<double>(i0);
-
-  // w_k = Π_{m ≠ k} (f − m) / (k − m) for nodes m = −2 ... 3, from prefix and suffix products
-  // of (f − m) so an integer f needs no division by zero.
-  constexpr std::array<double, 6> denominator{-120.0, 24.0, -12.0, 12.0, -24.0, 120.0};
-  std::array<double, 6> d{};
-  for (int k = 0; k < 6; ++k) d[static_cast<std::size_t>(k)] = f - static_cast<double>(k - 2);
-  std::array<double, 6> prefix{};
-  double product = 1.0;
-  for (std::size_t k = 0; k < 6; ++k) {
-    prefix[k] = product;
-    product *= d[k];
-  }
-  double sum = 0.0;
-  product = 1.0;  // suffix product
-  for (std::size_t k = 6; k-- > 0;) {
-    const double w = prefix[k] * product / denominator[k];
-    sum += w * x[wrap(i0 + static_cast<Eigen::Index>(k) - 2, n)];
-    product *= d[k];
-  }
-  return sum;
-}
-
-// The looped source filtered by Q: each bin m of its discrete Fourier transform (frequency
-// m·fs/N) times Q(m·fs/N), the circular convolution, exact for the periodic signal the pass-by
-// reads. FFTW's forward transform has e^{−iωt}, so a bin is the amplitude of e^{+iωt}, the
-// convention of Q. The mean (bin 0) is kept; Nyquist's bin of an even N must stay real.
-Eigen::VectorXd filtered_by(const Eigen::VectorXd& source, double sample_rate,
-                            const std::function<std::complex<double>(double)>& factor) {
+// The source with the two paths' interference at the closest approach divided out, so that the
+// pass-by gives it back there: the stationary signal already holds the road's reflection, and
+// the paths below apply it again. Bin m times
+//     E(f) = (1/r1 + R/r2) / (1/r1 + Q0(f)·e^{−ikΔr}/r2),  Δr = r2 − r1,
+// Q0 = R over a rigid road, the reflection factor at the closest approach over an absorbing one
+// (there R = 1 in the normalisation), e^{−ikΔr} the image path's delay behind the direct one.
+// E = 1 at zero frequency (Q0 → 1, or R); the mean is kept. Where direct and image nearly
+// cancel (a source a metre up at 550 Hz), E is large: it undoes the dip the source has.
+Eigen::VectorXd abeam_equalised(const Eigen::VectorXd& source, double sample_rate, double r1, double r2, double sound_speed,
+                                double reflection, const std::vector<std::complex<double>>& q0) {
   const auto n = static_cast<int>(source.size());
   RealFftBatch fft(n, 1);
   for (int i = 0; i < n; ++i) fft.at(0, i) = source[i];
   fft.forward();
+  const double normalisation = 1.0 / r1 + reflection / r2;
   for (int m = 1; m < fft.bins(); ++m) {
-    const std::complex<double> q = factor(m * sample_rate / n);
-    if (!std::isfinite(q.real()) || !std::isfinite(q.imag()))
-      throw std::invalid_argument("pass_by: settings.ground_reflection_factor must be finite");
-    fft.bin(0, m) *= (2 * m == n) ? std::complex<double>(q.real(), 0.0) : q;
+    const double k = 2.0 * std::numbers::pi * m * sample_rate / n / sound_speed;
+    const std::complex<double> q = q0.empty() ? std::complex<double>(reflection) : q0[static_cast<std::size_t>(m)];
+    std::complex<double> e = normalisation / (1.0 / r1 + q * std::polar(1.0, -k * (r2 - r1)) / r2);
+    if (2 * m == n) e = e.real();  // Nyquist's bin of an even n stays real
+    fft.bin(0, m) *= e;
   }
   fft.backward();
   Eigen::VectorXd out(n);
@@ -137,12 +110,6 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
   const double norm = 1.0 / (1.0 / r1_0 + reflection / r2_0);
   const std::array<Path, 2> paths{Path{r1_0 * r1_0, norm}, Path{r2_0 * r2_0, reflection * norm}};
   const int path_count = reflection > 0.0 ? 2 : 1;  // R = 0: the image adds nothing
-  // What each path reads: the source, or for the image over an absorbing road the source
-  // filtered by Q (made once, before the time loop).
-  const Eigen::VectorXd image_source =
-      settings.ground_reflection_factor ? filtered_by(source, sample_rate, settings.ground_reflection_factor) : Eigen::VectorXd();
-  const std::array<const Eigen::VectorXd*, 2> read{&source, settings.ground_reflection_factor ? &image_source : &source};
-
   // Emission time in closed form rather than by iteration: with τ = t − T/2 and the source at
   // x = V τ_e, t = t_e + r(t_e)/c squared is (c² − V²) τ_e² − 2c² τ τ_e + c² τ² − D² = 0, and
   // the root before τ gives the travel time
@@ -156,6 +123,28 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
   const double lag_0 = r1_0 / c;  // the time alignment: abeam and direct, source(t) comes back
 
   const auto n_out = static_cast<Eigen::Index>(std::llround(settings.duration * sample_rate));
+  // The emission time's lag of a path at output time tau (below).
+  const auto lag_of = [&](const Path& path, double tau) {
+    return (std::sqrt(c2 * v2 * tau * tau + a * path.lateral_sq) - v2 * tau) / a;
+  };
+  // Over an absorbing road, the image filtered along the stretch of road the pass-by hears it
+  // emitted from: from the first output sample's emission to the last's.
+  // What the paths read: the source with the closest approach's interference divided out.
+  const Eigen::VectorXd equalised =
+      reflection > 0.0 ? abeam_equalised(source, sample_rate, r1_0, r2_0, c, reflection,
+                                         settings.ground_reflection_factor
+                                             ? response_on_bins(static_cast<int>(source.size()), sample_rate,
+                                                                [&](double f) { return settings.ground_reflection_factor(f, d); })
+                                             : std::vector<std::complex<double>>())
+                       : source;
+  std::optional<MovingImageFilter> image;
+  if (settings.ground_reflection_factor) {
+    const auto emitted_at = [&](double tau) { return v * (tau - lag_of(paths[1], tau)); };
+    const MovingImageFilter::Geometry geometry{d, emitted_at(-half), emitted_at(static_cast<double>(n_out - 1) / sample_rate - half),
+                                               below, v / c};
+    image.emplace(equalised, sample_rate, geometry, settings.ground_reflection_factor);
+  }
+
   Eigen::VectorXd out(n_out);
   for (Eigen::Index n = 0; n < n_out; ++n) {
     if (n % 65536 == 0) settings.cancel.throw_if_cancelled();  // an hour's pass-by is 1.7e8 samples
@@ -163,12 +152,14 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
     double p = 0.0;
     for (int k = 0; k < path_count; ++k) {
       const Path& path = paths[static_cast<std::size_t>(k)];
-      const double lag = (std::sqrt(c2 * v2 * tau * tau + a * path.lateral_sq) - v2 * tau) / a;
+      const double lag = lag_of(path, tau);
       const double r = c * lag;
       // Source sample position of the emission time: n − (r/c − r1_0/c) · fs, formed from the
       // integer n so that long outputs keep their sub-sample precision.
       const double u = static_cast<double>(n) - (lag - lag_0) * sample_rate;
-      p += path.gain * interpolate(*read[static_cast<std::size_t>(k)], u) / r;
+      const double signal = k == 1 && image ? image->at(v * (tau - lag), u)
+                                            : read_looped(equalised, looped_lagrange_taps(u, equalised.size()));
+      p += path.gain * signal / r;
     }
     out[n] = p;
   }

@@ -10,11 +10,14 @@
 // one omnidirectional point source just above the road, plus its image in the road (height
 // −h_s) weighted by the pressure reflection coefficient R (1: a rigid, dense road), one real
 // number; or, over an absorbing road, filtered by the spherical-wave reflection factor
-// Q(f) = 1 + C/E of the impedance plane at the closest approach (radiation/impedance_plane_green.hpp:
-// the exact field's correction C to the rigid image E = e^{−ikR₂}/(4πR₂), so that direct + Q·image
-// is the exact field there). The factor is that of the closest approach for the whole pass-by:
-// as the tyre moves away the incidence grows more grazing and the real factor changes; the
-// level at the closest approach, which the pass-by's maximum is, is exact.
+// Q(f, ρ) = 1 + C/E of the impedance plane at the horizontal distance ρ between the tyre, where
+// it was when it emitted, and the receiver (radiation/impedance_plane_green.hpp: the exact
+// field's correction C to the rigid image E = e^{−ikR₂}/(4πR₂), so that direct + Q·image is the
+// exact field there). As the tyre moves away the incidence grows more grazing and Q changes,
+// and as it moves the reflected wave's frequency in the air is Doppler-shifted: the image path
+// reads the source filtered by Q at the distance and the shifted frequency of its emission
+// (audio/moving_image_filter.hpp: Q as a Chebyshev series in log ρ on each side of the closest
+// approach, exact there).
 //
 // Each path is the field of a moving source, q(t_e)/r(t_e), taken at the emission time t_e
 // that satisfies t = t_e + r(t_e)/c. Reading the source at t_e gives the Doppler shift
@@ -24,10 +27,13 @@
 // (a further factor (1 − M cos θ)^−1, within ±0.8 dB at 30 m/s) is not applied: the input is
 // a pressure at the receiver, not a source strength, and the factor is small at road speeds.
 //
-// q is the input scaled so that the direct and reflected paths at the closest approach give
-// back the input's level at low frequency: q = source / (1/r1_0 + R/r2_0) with r1_0, r2_0 the
-// two path lengths abeam. At higher frequencies the two paths interfere (the ground dip),
-// as they do at a real SPB microphone.
+// q is the input with the two paths' interference at the closest approach divided out, so that
+// the paths there give the input back at every frequency: the input is what the stationary
+// microphone hears, and already holds the road's reflection (the ground dip, and over an
+// absorbing road its ground effect), which the paths would otherwise apply a second time. Bin by
+// bin, q = source · (1/r1_0 + R/r2_0)^−1 · E(f), E = (1/r1_0 + R/r2_0)/(1/r1_0 + Q0(f)e^{−ikΔr}/r2_0)
+// with r1_0, r2_0 the two path lengths abeam, Δr their difference, Q0 = R or the reflection
+// factor abeam. Away from the closest approach the interference changes as the geometry does.
 #include <complex>
 #include <functional>
 
@@ -38,6 +44,7 @@
 namespace rollnoise {
 
 struct PassBySettings {
+  using ReflectionFactor = std::function<std::complex<double>(double frequency, double horizontal_distance)>;
   double speed = 0.0;              // m/s, > 0: the vehicle's speed along the road (x)
   double receiver_distance = 7.5;  // m from the wheel path (ISO 11819-1 SPB)
   double receiver_height = 1.2;    // m
@@ -45,11 +52,12 @@ struct PassBySettings {
   double duration = 5.0;           // s: length of the output; the closest approach is at its middle
   double sound_speed = 343.2;      // m/s
   double ground_reflection = 1.0;  // pressure reflection coefficient of the road, 0..1 (1: rigid)
-  // Over an absorbing road: Q at a frequency (Hz > 0), for time dependence e^{+iωt}, which
-  // filters the image path (above; the looped source, by its discrete Fourier transform) instead
-  // of ground_reflection, which must then be 1. Q → 1 at low frequency for a porous layer over
-  // a rigid base, so the normalisation below takes R = 1. Empty: the real R.
-  std::function<std::complex<double>(double)> ground_reflection_factor;
+  // Over an absorbing road: Q at a frequency (Hz > 0) and a horizontal distance between source
+  // and receiver (m, >= receiver_distance), for time dependence e^{+iωt}, which filters the
+  // image path (above; the looped source, by its discrete Fourier transform) instead of
+  // ground_reflection, which must then be 1. Q → 1 at low frequency for a porous layer over a
+  // rigid base, so the normalisation below takes R = 1. Empty: the real R.
+  ReflectionFactor ground_reflection_factor;
   CancellationToken cancel;        // polled every 65536 output samples (Interrupted)
 };
 
@@ -60,8 +68,8 @@ struct PassBySettings {
 // closest approach (what the stationary SPB receiver computes), sampled at the same rate. It
 // is treated as periodic (looped), so it may be shorter than the pass-by; pass a
 // make_loopable() period (audio/seamless_loop.hpp) so that the joint does not click. Time is
-// aligned so that a source standing abeam with no ground reflection gives back `source`
-// exactly: the signal emitted at t_e is source((t_e + r1_0/c) · sample_rate).
+// aligned so that a source standing abeam gives back `source` exactly: the signal emitted at
+// t_e is source((t_e + r1_0/c) · sample_rate) along the direct path.
 //
 // The emission times are solved in closed form (straight line, constant speed) and the source
 // is read between samples with 6-point Lagrange interpolation: the error for a tone is below

@@ -55,11 +55,19 @@ RunEstimate estimate_tyre_run(const TyreRunSize& z, const std::string& source) {
                          checked_product({z.samples, z.window_points, 8}, source, keys)},
                         source, keys)
           : checked_product({z.modal_poles, 5 * 16}, source, keys);
+  // The audio: each receiver's signal at the audio rate, resampled, looped and written (three
+  // copies); over an absorbing road the pass-by's image filter holds its series' filtered copies
+  // of the source (audio/moving_image_filter.hpp: 33 for the ISO geometry over porous asphalt,
+  // counted as 40).
+  const std::uint64_t audio =
+      checked_product({checked_sum({checked_product({z.receivers, 3}, source, keys), z.absorbing_pass_by ? 40u : 0u}, source, keys),
+                       z.audio_frames, 8},
+                      source, keys);
   e.memory_bytes = checked_sum({checked_product({z.samples, 64}, source, keys),
                                 checked_product({z.samples, z.window_columns, 8}, source, keys),
                                 checked_product({window_matrix, 6}, source, keys), engine,
                                 z.radiating ? checked_product({radiating_rows, z.circumferential, 8}, source, keys) : 0,
-                                z.radiating ? z.radiation_solve_bytes : 0},
+                                z.radiating ? z.radiation_solve_bytes : 0, audio},
                                source, keys);
   // Disk: contact.h5 (floats) and the WAVs.
   std::uint64_t fields_per_step = 0;

@@ -40,6 +40,7 @@ struct TyreRunSize {
   std::uint64_t radiation_solve_bytes = 0;  // one anchor's solve on the finest mesh, times the solving threads
   std::uint64_t receivers = 0;        // WAV files
   std::uint64_t audio_frames = 0;     // of each
+  bool absorbing_pass_by = false;     // the pass-by filters its image path over an absorbing road
   ContactFields fields = ContactFields::contact;
   SurfaceBlock block;                 // the belt velocity's decimation for ContactFields::contact
 };

@@ -232,6 +232,7 @@ TyreRunSize tyre_run_size(const TyreGrid& grid, const RollingModes& rolling_mode
   size.radiation_block = stream_sound ? TyreRadiationStream::block_samples(1.0 / dt) : 0;
   size.receivers = sound.enabled && sound.wav ? sound.receivers.size() : 0;
   size.audio_frames = static_cast<std::uint64_t>(std::max(settings.duration, sound.wav_duration) * sound.audio_rate);
+  size.absorbing_pass_by = size.receivers > 0 && static_cast<bool>(sound.radiation.admittance);
   size.fields = fields;
   return size;
 }

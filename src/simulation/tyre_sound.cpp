@@ -230,14 +230,16 @@ nlohmann::json write_radiated_sound(const fs::path& dir, const TyreSoundSettings
     passing.duration = settings.wav_duration;
     passing.sound_speed = settings.radiation.medium.sound_speed;
     // Over an absorbing road the image path carries the impedance plane's reflection at the
-    // closest approach (pass_by.hpp), from the exact field.
+    // tyre's horizontal distance as it passes (pass_by.hpp), from the exact field.
     if (settings.radiation.admittance)
-      passing.ground_reflection_factor = [admittance = settings.radiation.admittance, passing](double frequency) {
+      passing.ground_reflection_factor = [admittance = settings.radiation.admittance, passing](double frequency,
+                                                                                               double distance) {
         const double k = 2.0 * std::numbers::pi * frequency / passing.sound_speed;
         const double height = passing.receiver_height + passing.source_height;
-        const double r2 = std::hypot(passing.receiver_distance, height);
+        const double r2 = std::hypot(distance, height);
         const std::complex<double> image = std::polar(1.0 / (4.0 * std::numbers::pi * r2), -k * r2);
-        return 1.0 + impedance_plane_correction(k, passing.receiver_distance, height, admittance(frequency)) / image;
+        // (to 1e-10 of the image's field: the filter's series holds Q to 1e-4)
+        return 1.0 + impedance_plane_correction(k, distance, height, admittance(frequency), 1e-10) / image;
       };
     const ReceiverSignal& stationary = signals[static_cast<std::size_t>(spb - settings.receivers.begin())];
     signals.push_back({"spb_passby", pass_by(make_loopable(stationary.pressure, settings.audio_rate), settings.audio_rate, passing),
