@@ -862,24 +862,24 @@ std::vector<Eigen::MatrixXcd> EquivalentSources::power_operator(const Equivalent
   if (columns < 0 || columns > surface_.cols()) throw std::invalid_argument("equivalent sources: columns out of range");
   // L_cᴴ·V_c⁺ from the block's own factor: V⁺ = Σ_c U_c V_c⁺ W_cᵀ and W_cᵀW_d = δ_cd, so
   // F·V⁺ = Σ_c L_cᴴ V_c⁺ U_cᵀ (the weights, when set, act on v in point_coordinates).
+  // Only the kept coordinates' columns are formed (apply_pseudo_inverse_right with `keep`).
   const auto block_operator = [&](const std::optional<RegularisedLeastSquares>& factor, const Eigen::MatrixXcd& l,
-                                  Eigen::Index points) -> Eigen::MatrixXcd {
-    if (!factor || l.cols() == 0) return Eigen::MatrixXcd::Zero(l.cols(), points);
-    return factor->apply_pseudo_inverse_right(l.adjoint());
+                                  const std::vector<Eigen::Index>& keep) -> Eigen::MatrixXcd {
+    if (!factor || l.cols() == 0) return Eigen::MatrixXcd::Zero(l.cols(), static_cast<Eigen::Index>(keep.size()));
+    return factor->apply_pseudo_inverse_right(l.adjoint(), keep);
   };
   if (!point_basis_) {
     const Eigen::MatrixXcd l = pivoted_cholesky(power_matrix(omega), tolerance);
-    return {block_operator(solve.factors_[0], l, surface_.cols()).leftCols(columns)};
+    std::vector<Eigen::Index> leading(static_cast<std::size_t>(columns));
+    std::iota(leading.begin(), leading.end(), Eigen::Index{0});
+    return {block_operator(solve.factors_[0], l, leading)};
   }
   const std::vector<Eigen::MatrixXcd> blocks = power_blocks(omega);
   const std::vector<std::vector<Eigen::Index>> positions = leading_coordinates(columns);
   std::vector<Eigen::MatrixXcd> out;
   for (int c = 0; c < point_basis_->characters(); ++c) {
     const auto k = static_cast<std::size_t>(c);
-    const Eigen::MatrixXcd q = block_operator(solve.factors_[k], pivoted_cholesky(blocks[k], tolerance), point_basis_->size(c));
-    Eigen::MatrixXcd kept(q.rows(), static_cast<Eigen::Index>(positions[k].size()));
-    for (std::size_t i = 0; i < positions[k].size(); ++i) kept.col(static_cast<Eigen::Index>(i)) = q.col(positions[k][i]);
-    out.push_back(std::move(kept));
+    out.push_back(block_operator(solve.factors_[k], pivoted_cholesky(blocks[k], tolerance), positions[k]));
   }
   return out;
 }
