@@ -151,6 +151,34 @@ void BM_QuantisePowerOperatorSplitMesh5623Hz(benchmark::State& state) {
 }
 BENCHMARK(BM_QuantisePowerOperatorSplitMesh5623Hz)->Unit(benchmark::kMillisecond)->Iterations(3);
 
+// One cold anchor of a run to 5623 Hz exactly as the stage solves it before storing it in the
+// cache (TyreRadiation::solve_anchor): the solve, the transfer to the three microphones, the power
+// operator on the tread and its rotation and rounding. The top anchor (the split mesh, combined
+// sources), one on the base mesh with combined sources and one with monopoles. This is what a
+// profile of the cold radiation runs on (valgrind --tool=callgrind ... --benchmark_filter=ColdAnchor).
+void cold_anchor(benchmark::State& state, double f) {
+  TyreRadiationSettings settings;
+  settings.mesh = base_spec();
+  settings.max_frequency_hz = 5623.4;
+  const Eigen::Matrix3Xd receivers = (Eigen::Matrix3Xd(3, 3) << 0.2, -0.2, 0.0, 0.29, 0.29, 7.5, 0.1, 0.1, 1.2).finished();
+  const TyreRadiation radiation(settings, receivers);
+  const std::size_t level = radiation.level_of(f);
+  const Eigen::Index columns = radiation.level_mesh(level).tread_points;
+  Eigen::Index rank = 0;
+  for (auto _ : state) {
+    const AnchorOperators operators = radiation.solve_anchor(level, f, columns);
+    rank = operators.power_rank();
+    benchmark::DoNotOptimize(operators.transfer.data());
+  }
+  state.counters["power_rank"] = static_cast<double>(rank);
+}
+void BM_ColdAnchorSplitMesh5623Hz(benchmark::State& state) { cold_anchor(state, 5623.4); }
+BENCHMARK(BM_ColdAnchorSplitMesh5623Hz)->Unit(benchmark::kMillisecond)->Iterations(1);
+void BM_ColdAnchorBaseMesh4kHz(benchmark::State& state) { cold_anchor(state, 4000.0); }
+BENCHMARK(BM_ColdAnchorBaseMesh4kHz)->Unit(benchmark::kMillisecond)->Iterations(1);
+void BM_ColdAnchorBaseMesh2kHz(benchmark::State& state) { cold_anchor(state, 2000.0); }
+BENCHMARK(BM_ColdAnchorBaseMesh2kHz)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 // The first version's reference on the uniform mesh (96 × 8, monopoles): P·V⁺ from the thin SVD.
 void BM_AnchorSolveSvdReference(benchmark::State& state) {
   const TyreSurfaceMesh mesh = make_tyre_surface_mesh({});

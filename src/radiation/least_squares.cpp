@@ -181,6 +181,33 @@ Eigen::MatrixXcd RegularisedLeastSquares::apply_pseudo_inverse_right(const Eigen
   return padded.topRows(m).adjoint();
 }
 
+Eigen::MatrixXcd RegularisedLeastSquares::apply_pseudo_inverse_right(const Eigen::MatrixXcd& x,
+                                                                     const std::vector<Eigen::Index>& keep) const {
+  if (!factorised_) throw std::logic_error("least squares: not factorised");
+  const int n = as_int(factor_.cols()), k = as_int(x.rows());
+  if (x.cols() != n) throw std::invalid_argument("least squares: one column per column of A");
+  const Eigen::Index m = normal_ ? a_.rows() : factor_.rows() - n;
+  for (const Eigen::Index i : keep)
+    if (i < 0 || i >= m) throw std::invalid_argument("least squares: a kept column out of range");
+  const int kept = as_int(static_cast<Eigen::Index>(keep.size()));
+  if (!normal_ || k == 0 || kept == 0) {
+    const Eigen::MatrixXcd full = apply_pseudo_inverse_right(x);
+    Eigen::MatrixXcd out(x.rows(), kept);
+    for (int i = 0; i < kept; ++i) out.col(i) = full.col(keep[static_cast<std::size_t>(i)]);
+    return out;
+  }
+  Eigen::MatrixXcd z = x.adjoint();
+  int info = 0;
+  zpotrs_("L", &n, &k, factor_.data(), &n, z.data(), &n, &info, 1);
+  check(info, "zpotrs");
+  Eigen::MatrixXcd rows(kept, n);
+  for (int i = 0; i < kept; ++i) rows.row(i) = a_.row(keep[static_cast<std::size_t>(i)]);
+  const Complex one(1.0, 0.0), zero(0.0, 0.0);
+  Eigen::MatrixXcd w(kept, k);
+  cblas_zgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, kept, k, n, &one, rows.data(), kept, z.data(), n, &zero, w.data(), kept);
+  return w.adjoint();
+}
+
 Eigen::MatrixXcd blas_product(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
   if (a.cols() != b.rows()) throw std::invalid_argument("blas_product: the inner dimensions differ");
   Eigen::MatrixXcd out(a.rows(), b.cols());

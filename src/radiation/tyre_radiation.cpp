@@ -46,7 +46,9 @@ constexpr double kCouplingFloor = 50.0;
 
 // Raise when a change of the stage's solve changes the operators it stores: old cache entries
 // then miss (radiation_cache.hpp). The key digests the inputs; this marks the code.
-constexpr int kAnchorSolveRevision = 2;
+// 3: the power factor's pivoted Cholesky by the BLAS's zgemv, the power matrix's blocks from
+// their upper triangles and QQᴴ by zherk (the last bits, and so the rotated operator's, changed).
+constexpr int kAnchorSolveRevision = 3;
 
 // What one anchor gives: the transfer to the receivers, and its hat-weighted share of the power
 // of the bins around it.
