@@ -78,7 +78,9 @@ TEST(PoleRecursion, AvxPathGivesTheScalarBits) {
     scalar.advance(force.data(), predict ? coming_scalar.data() : nullptr);
     vector.advance(force.data(), predict ? coming_vector.data() : nullptr);
     ASSERT_EQ(scalar.states(), vector.states()) << "step " << step;
-    if (predict) ASSERT_EQ(coming_scalar, coming_vector) << "step " << step;
+    if (predict) {
+      ASSERT_EQ(coming_scalar, coming_vector) << "step " << step;
+    }
   }
 }
 
