@@ -3,8 +3,9 @@
 // advanced by its exact one-state recursion (rolling_modes.hpp),
 //   y_r ← a_r·y_r + b_r·f_ml,   a_r = e^{q_r Δt},   b_r = ρ_r (e^{q_r Δt} − 1)/q_r,
 // and the circumferential orders are taken to and from the window by FFTs over the whole
-// circumference. Per step: 2·N FFTs of length Nθ, one complex multiply-add per pole and two
-// small products with the lateral shapes. All buffers and FFTW plans are made in the
+// circumference. Per step: 2·N FFTs of length Nθ, one pass over the poles (pole_recursion.hpp:
+// the advance, which also leaves Σ a·y per mode for the next step's u⁰) and two small products
+// with the lateral shapes. All buffers and FFTW plans are made in the
 // constructor; nothing is allocated in the step loop. FFTW_ESTIMATE plans, so results do not
 // depend on run-time timing.
 #include <complex>
@@ -14,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "contact/history_engine.hpp"
+#include "contact/pole_recursion.hpp"
 #include "contact/rolling_modes.hpp"
 
 namespace rollnoise {
@@ -44,16 +46,16 @@ class ModalHistoryEngine : public HistoryEngine {
 
   const RollingModes& modes_;
   std::unique_ptr<RealFftBatch> fft_;
-  // Poles of mode r at first_pole_[r] … first_pole_[r + 1] − 1.
-  std::vector<std::size_t> first_pole_;
-  std::vector<std::complex<double>> decay_;   // a = e^{qΔt}
-  std::vector<std::complex<double>> input_;   // b = ρ(e^{qΔt} − 1)/q
-  std::vector<std::complex<double>> rate_;    // q
-  std::vector<std::complex<double>> states_;  // y
-  // a·y, computed by history() for the u⁰ of the coming step and reused by advance(), which then
-  // only adds b·f (valid until advance()).
-  mutable std::vector<std::complex<double>> predicted_;
-  mutable bool predicted_valid_ = false;
+  // Poles of mode r at recursion_.first_pole(r) … first_pole(r + 1) − 1: a = e^{qΔt},
+  // b = ρ(e^{qΔt} − 1)/q and the states y.
+  PoleRecursion recursion_;
+  std::vector<std::complex<double>> rate_;  // q
+  // Σ a·y per mode for the u⁰ of the coming step: what the earlier forces leave at its end.
+  // Made by advance() in its pass once history() has been asked for (the response stage's
+  // engine never asks), else by history() from the states.
+  mutable std::vector<std::complex<double>> coming_;
+  mutable bool coming_valid_ = false;
+  mutable bool predict_in_advance_ = false;
   std::vector<double> direct_;                      // d per mode
   std::vector<std::complex<double>> residue_sum_;  // Σρ per mode
   std::vector<std::complex<double>> modal_force_;
