@@ -65,6 +65,29 @@ std::vector<std::complex<double>> response_on_bins(int n, double sample_rate,
   return to_bins(on_grid, grid, n);
 }
 
+Eigen::VectorXcd looped_spectrum(RealFftBatch& fft, const Eigen::VectorXd& source) {
+  const auto n = static_cast<int>(source.size());
+  for (int i = 0; i < n; ++i) fft.at(0, i) = source[i];
+  fft.forward();
+  Eigen::VectorXcd spectrum(fft.bins());
+  for (int m = 0; m < fft.bins(); ++m) spectrum[m] = fft.bin(0, m);
+  return spectrum;
+}
+
+Eigen::VectorXd filtered_loop(RealFftBatch& fft, const Eigen::VectorXcd& spectrum,
+                              const std::function<std::complex<double>(int bin)>& gain) {
+  const int n = fft.length();
+  for (int m = 0; m < fft.bins(); ++m) {
+    std::complex<double> g = gain(m);
+    if (2 * m == n) g = g.real();
+    fft.bin(0, m) = spectrum[m] * g;
+  }
+  fft.backward();
+  Eigen::VectorXd out(n);
+  for (int i = 0; i < n; ++i) out[i] = fft.at(0, i) / n;
+  return out;
+}
+
 MovingImageFilter::MovingImageFilter(const Eigen::VectorXd& source, double sample_rate, const Geometry& geometry,
                                      const Factor& factor)
     : geometry_(geometry),
@@ -143,24 +166,15 @@ MovingImageFilter::MovingImageFilter(const Eigen::VectorXd& source, double sampl
   }
   const Values coefficient = coefficients(values, degree);
 
-  // Each coefficient, interpolated to the source's bins, filters the looped source.
+  // Each coefficient, interpolated to the source's bins, filters the looped source; the mean is
+  // kept (Q = 1 at zero frequency: the first term alone).
   RealFftBatch fft(n, 1);
-  for (int i = 0; i < n; ++i) fft.at(0, i) = source[i];
-  fft.forward();
-  Eigen::VectorXcd spectrum(fft.bins());
-  for (int m = 0; m < fft.bins(); ++m) spectrum[m] = fft.bin(0, m);
+  const Eigen::VectorXcd spectrum = looped_spectrum(fft, source);
   for (std::size_t k = 0; k < coefficient.size(); ++k) {
     const std::vector<std::complex<double>> on_bins = to_bins(coefficient[k], grid, n);
-    fft.bin(0, 0) = k == 0 ? spectrum[0] : 0.0;  // the mean is kept (Q = 1 at zero frequency)
-    for (int m = 1; m < fft.bins(); ++m) {
-      std::complex<double> q = on_bins[static_cast<std::size_t>(m)];
-      if (2 * m == n) q = q.real();  // Nyquist's bin of an even n stays real
-      fft.bin(0, m) = spectrum[m] * q;
-    }
-    fft.backward();
-    Eigen::VectorXd out(n);
-    for (int i = 0; i < n; ++i) out[i] = fft.at(0, i) / n;
-    filtered_.push_back(std::move(out));
+    filtered_.push_back(filtered_loop(fft, spectrum, [&](int m) -> std::complex<double> {
+      return m == 0 ? (k == 0 ? 1.0 : 0.0) : on_bins[static_cast<std::size_t>(m)];
+    }));
   }
 }
 

@@ -24,6 +24,8 @@
 
 #include <Eigen/Core>
 
+#include "core/real_fft_batch.hpp"
+
 namespace rollnoise {
 
 // `response` sampled at MovingImageFilter::kFactorsPerOctave frequencies to the octave from
@@ -32,6 +34,17 @@ namespace rollnoise {
 // frequency). std::invalid_argument if it is not finite somewhere.
 std::vector<std::complex<double>> response_on_bins(int n, double sample_rate,
                                                    const std::function<std::complex<double>(double)>& response);
+
+// The looped (periodic) signal `source`'s transform, made with `fft` (an n-point real transform,
+// n = source.size(), one transform).
+Eigen::VectorXcd looped_spectrum(RealFftBatch& fft, const Eigen::VectorXd& source);
+
+// The looped signal of transform `spectrum` filtered: bin m times gain(m) (FFTW's forward
+// transform has e^{−iωt}, so a bin is the amplitude of e^{+iωt}, the convention of the gains),
+// back in time. The circular convolution, exact for the periodic signal the pass-by reads;
+// Nyquist's bin of an even n takes the real part of its gain, as it must stay real.
+Eigen::VectorXd filtered_loop(RealFftBatch& fft, const Eigen::VectorXcd& spectrum,
+                              const std::function<std::complex<double>(int bin)>& gain);
 
 class MovingImageFilter {
  public:
@@ -57,8 +70,6 @@ class MovingImageFilter {
   // The image path's signal at fractional source sample `u` (pass_by.hpp's time base) for a
   // tyre that emitted it at position `x` along the road (m; negative before the closest approach).
   double at(double x, double u) const;
-
-  int terms() const noexcept { return static_cast<int>(filtered_.size()); }
 
  private:
   double position(double node) const;  // x (m) at ξ = node

@@ -1,6 +1,5 @@
 #include "audio/pass_by.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -76,20 +75,13 @@ Eigen::VectorXd abeam_equalised(const Eigen::VectorXd& source, double sample_rat
                                 double reflection, const std::vector<std::complex<double>>& q0) {
   const auto n = static_cast<int>(source.size());
   RealFftBatch fft(n, 1);
-  for (int i = 0; i < n; ++i) fft.at(0, i) = source[i];
-  fft.forward();
   const double normalisation = 1.0 / r1 + reflection / r2;
-  for (int m = 1; m < fft.bins(); ++m) {
+  return filtered_loop(fft, looped_spectrum(fft, source), [&](int m) -> std::complex<double> {
+    if (m == 0) return 1.0;
     const double k = 2.0 * std::numbers::pi * m * sample_rate / n / sound_speed;
     const std::complex<double> q = q0.empty() ? std::complex<double>(reflection) : q0[static_cast<std::size_t>(m)];
-    std::complex<double> e = normalisation / (1.0 / r1 + q * std::polar(1.0, -k * (r2 - r1)) / r2);
-    if (2 * m == n) e = e.real();  // Nyquist's bin of an even n stays real
-    fft.bin(0, m) *= e;
-  }
-  fft.backward();
-  Eigen::VectorXd out(n);
-  for (int i = 0; i < n; ++i) out[i] = fft.at(0, i) / n;
-  return out;
+    return normalisation / (1.0 / r1 + q * std::polar(1.0, -k * (r2 - r1)) / r2);
+  });
 }
 
 }  // namespace
@@ -127,8 +119,6 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
   const auto lag_of = [&](const Path& path, double tau) {
     return (std::sqrt(c2 * v2 * tau * tau + a * path.lateral_sq) - v2 * tau) / a;
   };
-  // Over an absorbing road, the image filtered along the stretch of road the pass-by hears it
-  // emitted from: from the first output sample's emission to the last's.
   // What the paths read: the source with the closest approach's interference divided out.
   const Eigen::VectorXd equalised =
       reflection > 0.0 ? abeam_equalised(source, sample_rate, r1_0, r2_0, c, reflection,
@@ -137,6 +127,8 @@ Eigen::VectorXd pass_by(const Eigen::VectorXd& source, double sample_rate,
                                                                 [&](double f) { return settings.ground_reflection_factor(f, d); })
                                              : std::vector<std::complex<double>>())
                        : source;
+  // Over an absorbing road, the image filtered along the stretch of road the pass-by hears it
+  // emitted from: from the first output sample's emission to the last's.
   std::optional<MovingImageFilter> image;
   if (settings.ground_reflection_factor) {
     const auto emitted_at = [&](double tau) { return v * (tau - lag_of(paths[1], tau)); };
